@@ -1,0 +1,75 @@
+// The Camera: an eye, a view direction, a view plane at some distance, and the array
+// of Pixels behind it. The set-up rule of the design places it: the eye lies on the
+// line through the centre of the back wall W5, orthogonal to it, and the rays from the
+// eye to the room's four front corners pass through the view plane's four corners.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "glint/Image.hpp"
+#include "glint/Integrator.hpp"
+#include "glint/Pixel.hpp"
+#include "glint/RenderStats.hpp"
+#include "glint/Wall.hpp"
+
+namespace glint {
+
+struct RenderOptions {
+  int raysPerPixel = 1;
+  std::uint64_t seed = 1;
+  int threads = 0;  // 0: OpenMP's default
+  // Called now and then from one thread with (pixels done, pixels in all).
+  std::function<void(std::size_t, std::size_t)> progress;
+};
+
+class Camera {
+ public:
+  // Throws std::invalid_argument if the eye is not on the axis of the room in front of
+  // its open side, or the resolution is not positive.
+  Camera(const Wall& room, vec3 eye, int width, int height);
+
+  vec3 Eye() const { return eye_; }
+  vec3 ViewDirection() const { return viewDirection_; }
+  double ViewPlaneDistance() const { return viewPlaneDistance_; }
+  // Half the width and height of the view plane, in metres.
+  double HalfWidth() const { return halfWidth_; }
+  double HalfHeight() const { return halfHeight_; }
+  int Width() const { return width_; }
+  int Height() const { return height_; }
+
+  // The point of the view plane at image coordinates (px, py) in [0, W] x [0, H],
+  // (0, 0) being the top-left corner of pixel (0, 0).
+  vec3 ViewPlanePoint(double px, double py) const;
+  // Unit direction from the eye through image coordinates (px, py).
+  vec3 DirectionThrough(double px, double py) const;
+
+  // Renders every pixel, in parallel over pixels. The result depends on the seed only,
+  // never on the number of threads: each pixel has its own random stream.
+  RenderStats Render(const Integrator& integrator, const RenderOptions& options);
+
+  const Pixel& PixelAt(int x, int y) const { return pixels_[Index(x, y)]; }
+  Image ToImage() const;
+  // Saves through the mapping function (PNG, PPM) or as linear radiance (PFM).
+  void Save(const std::string& path, double exposure) const;
+
+ private:
+  std::size_t Index(int x, int y) const {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
+           static_cast<std::size_t>(x);
+  }
+
+  vec3 eye_;
+  vec3 viewDirection_{0.0, 0.0, -1.0};
+  vec3 planeCentre_;
+  double viewPlaneDistance_;
+  double halfWidth_;
+  double halfHeight_;
+  int width_;
+  int height_;
+  std::vector<Pixel> pixels_;
+};
+
+}  // namespace glint

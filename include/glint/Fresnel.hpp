@@ -1,0 +1,23 @@
+// Snell's law and the Fresnel equations for a dielectric boundary. Normals point to
+// the outside (the medium of index 1); `ior` is the refractive index inside.
+#pragma once
+
+#include <optional>
+
+#include "glint/Math.hpp"
+
+namespace glint {
+
+// Unpolarised Fresnel reflectance for a ray arriving along d at a surface with outward
+// normal n: F = (r_par^2 + r_perp^2) / 2. A ray from inside (dot(d, n) > 0) sees the
+// index ratio flipped. Returns 1 for total internal reflection.
+double FresnelDielectric(vec3 d, vec3 n, double ior);
+
+// Reflectance at normal incidence, ((n - 1) / (n + 1))^2.
+double FresnelNormalIncidence(double ior);
+
+// Refracted direction (unit) for a ray along d, or nothing for total internal
+// reflection. Uses a safe square root; works from either side of the surface.
+std::optional<vec3> Refract(vec3 d, vec3 n, double ior);
+
+}  // namespace glint

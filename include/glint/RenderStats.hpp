@@ -1,0 +1,30 @@
+// Counters of one render: rays by kind and samples dropped for being NaN or Inf.
+#pragma once
+
+#include <cstdint>
+
+namespace glint {
+
+struct RenderStats {
+  std::uint64_t cameraRays = 0;
+  std::uint64_t reflectedRays = 0;
+  std::uint64_t refractedRays = 0;
+  std::uint64_t diffuseRays = 0;
+  std::uint64_t shadowRays = 0;
+  std::uint64_t nonFiniteSamples = 0;  // NaN or Inf samples, dropped before averaging
+
+  std::uint64_t TotalRays() const {
+    return cameraRays + reflectedRays + refractedRays + diffuseRays + shadowRays;
+  }
+  RenderStats& operator+=(const RenderStats& o) {
+    cameraRays += o.cameraRays;
+    reflectedRays += o.reflectedRays;
+    refractedRays += o.refractedRays;
+    diffuseRays += o.diffuseRays;
+    shadowRays += o.shadowRays;
+    nonFiniteSamples += o.nonFiniteSamples;
+    return *this;
+  }
+};
+
+}  // namespace glint

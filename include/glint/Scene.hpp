@@ -1,0 +1,55 @@
+// Everything the renderer draws: the room (Wall), the objects (Spheres and Cubes), the
+// Monte Carlo area light and the Whitted point lights, and the camera and mode
+// settings read from the scene file.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "glint/Cube.hpp"
+#include "glint/Hit.hpp"
+#include "glint/Light.hpp"
+#include "glint/PointLight.hpp"
+#include "glint/Sphere.hpp"
+#include "glint/Wall.hpp"
+
+namespace glint {
+
+struct CameraSettings {
+  vec3 eye{0.5, 0.5, 2.5};
+  int width = 512;
+  int height = 512;
+};
+
+struct ModeSettings {
+  int spp = 1;             // rays per pixel
+  int maxDepth = 10;       // ray iterations (Whitted)
+  double exposure = 1.0;   // display mapping: radiance times exposure
+};
+
+class Scene {
+ public:
+  Wall wall;
+  std::vector<Sphere> spheres;
+  std::vector<Cube> cubes;
+  std::optional<Light> light;
+  std::vector<PointLight> pointLights;
+  CameraSettings camera;
+  ModeSettings whitted{4, 10, 1.0};
+  ModeSettings mc{64, 10, 1.0};
+  std::vector<std::string> objectNames;  // W1..W5, the objects, the lights
+
+  // Closest hit along the ray. With `withAreaLight`, the light rectangle is part of the
+  // scene and wins over the ceiling it lies in (spec: "a ray hits the light").
+  bool Intersect(vec3 origin, vec3 direction, Hit& hit, bool withAreaLight) const;
+
+  // Whitted shadow ray from p toward q: blocked by opaque objects only, transparent
+  // objects let it through (the design's rule). The room is convex, so no wall can
+  // stand between two points inside it.
+  bool VisibleThroughTransparent(vec3 p, vec3 q) const;
+
+  const std::string& ObjectName(int object) const;
+};
+
+}  // namespace glint

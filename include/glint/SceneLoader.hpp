@@ -1,0 +1,29 @@
+// Scene files: JSON, validated field by field (see scenes/cornell.json), with
+// command-line overrides by JSON pointer (`/objects/1/ior=1.3`).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "glint/JsonReader.hpp"
+#include "glint/Scene.hpp"
+
+namespace glint {
+
+// Parses the file; a syntax error becomes an InputError with file:line:column.
+nlohmann::json ReadJsonFile(const std::string& path);
+
+// Applies one "POINTER=VALUE" override. VALUE is read as JSON, or as a string if it is
+// not JSON. The pointer's parent must exist in the document.
+void ApplyOverride(nlohmann::json& document, const std::string& assignment,
+                   const std::string& file);
+
+// Builds and validates a scene; every error is an InputError naming the field.
+Scene SceneFromJson(const nlohmann::json& document, const std::string& file);
+
+// ReadJsonFile, the overrides in order, then SceneFromJson.
+Scene LoadScene(const std::string& path, const std::vector<std::string>& overrides = {});
+
+}  // namespace glint

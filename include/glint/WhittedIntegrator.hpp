@@ -1,0 +1,37 @@
+// Whitted mode: point lights, shadow rays through transparent objects, the Phong local
+// term on objects, Lambertian walls lit directly, perfect mirror reflection and
+// Fresnel-weighted reflection and refraction, at most `maxDepth` ray iterations.
+#pragma once
+
+#include "glint/Hit.hpp"
+#include "glint/Integrator.hpp"
+#include "glint/Scene.hpp"
+
+namespace glint {
+
+class WhittedIntegrator final : public Integrator {
+ public:
+  WhittedIntegrator(const Scene& scene, int maxDepth);
+
+  Colour Trace(RayTree& tree, std::uint32_t root, Pcg32& rng,
+               RenderStats& stats) const override;
+
+  // The local term at a hit seen along direction d: for every visible point light of
+  // intensity I at distance r and angle theta, with E = I cos(theta) / r^2,
+  //   rho * E * (kd / pi + ks (n + 2) / (2 pi) max(0, R . -d)^n),
+  // R being the light's mirror direction. For a wall (kd = 1, ks = 0) this is the
+  // spec's rho / pi * I cos(theta) / r^2.
+  Colour LocalLight(const Hit& hit, vec3 d, RenderStats& stats) const;
+
+ private:
+  Colour TraceNode(RayTree& tree, std::uint32_t index, RenderStats& stats) const;
+  // Creates the reflected and refracted children of tree[index] for its hit and
+  // returns how many it made.
+  std::uint32_t SpawnChildren(RayTree& tree, std::uint32_t index, const Hit& hit,
+                              RenderStats& stats) const;
+
+  const Scene& scene_;
+  int maxDepth_;
+};
+
+}  // namespace glint

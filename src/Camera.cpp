@@ -1,0 +1,91 @@
+#include "glint/Camera.hpp"
+
+#include <omp.h>
+
+#include <atomic>
+#include <stdexcept>
+
+#include "glint/ImageIO.hpp"
+
+namespace glint {
+
+Camera::Camera(const Wall& room, vec3 eye, int width, int height)
+    : eye_(eye), width_(width), height_(height) {
+  if (width <= 0 || height <= 0) throw std::invalid_argument("image size must be positive");
+  // The eye lies on the axis through the centre of the back wall, orthogonal to it,
+  // in front of the open side of the room.
+  const vec3 back = room.Centre() - vec3(0.0, 0.0, 0.5 * room.Size());
+  const double front = room.Position().z + room.Size();
+  const double tolerance = 1e-9 * (1.0 + room.Size());
+  if (std::abs(eye.x - back.x) > tolerance || std::abs(eye.y - back.y) > tolerance ||
+      eye.z <= front) {
+    throw std::invalid_argument(
+        "the eye must lie on the line through the centre of the back wall, in front of "
+        "the room's open side");
+  }
+  viewDirection_ = glm::normalize(back - eye);
+  // The set-up rule: the ray from the eye to a front corner, (c.x +- s/2, c.y +- s/2,
+  // front), must pass through the view plane's corner (+-halfWidth, +-halfHeight) at
+  // distance d. With the view plane the size of the room's cross-section, similar
+  // triangles give d = eye.z - front: the plane lies in the front opening.
+  viewPlaneDistance_ = eye.z - front;
+  halfHeight_ = 0.5 * room.Size();
+  // A non-square image keeps square pixels: the plane widens with the aspect ratio.
+  halfWidth_ = halfHeight_ * static_cast<double>(width) / static_cast<double>(height);
+  planeCentre_ = eye_ + viewPlaneDistance_ * viewDirection_;
+  pixels_.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+}
+
+vec3 Camera::ViewPlanePoint(double px, double py) const {
+  // Image x grows to the right (+x in the world), image y grows downward (-y).
+  const double sx = (2.0 * px / width_ - 1.0) * halfWidth_;
+  const double sy = (1.0 - 2.0 * py / height_) * halfHeight_;
+  return planeCentre_ + vec3(sx, sy, 0.0);
+}
+
+vec3 Camera::DirectionThrough(double px, double py) const {
+  return glm::normalize(ViewPlanePoint(px, py) - eye_);
+}
+
+RenderStats Camera::Render(const Integrator& integrator, const RenderOptions& options) {
+  const int count = width_ * height_;
+  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+  std::atomic<std::size_t> done{0};
+  RenderStats total;
+#pragma omp parallel num_threads(threads)
+  {
+    RayTree trees;  // this thread's arena, reused for every pixel it renders
+    RenderStats stats;
+#pragma omp for schedule(dynamic, 16) nowait
+    for (int i = 0; i < count; ++i) {
+      const int x = i % width_;
+      const int y = i / width_;
+      Pcg32 rng = Pcg32::ForPixel(options.seed, static_cast<std::uint64_t>(i));
+      pixels_[static_cast<std::size_t>(i)].Render(*this, x, y, options.raysPerPixel,
+                                                  integrator, rng, trees, stats);
+      const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
+      if (options.progress && omp_get_thread_num() == 0 && finished % 256 == 0) {
+        options.progress(finished, static_cast<std::size_t>(count));
+      }
+    }
+#pragma omp critical(glint_render_stats)
+    total += stats;
+  }
+  if (options.progress) options.progress(static_cast<std::size_t>(count),
+                                         static_cast<std::size_t>(count));
+  return total;
+}
+
+Image Camera::ToImage() const {
+  Image image(width_, height_);
+  for (int y = 0; y < height_; ++y) {
+    for (int x = 0; x < width_; ++x) image.At(x, y) = PixelAt(x, y).Radiance();
+  }
+  return image;
+}
+
+void Camera::Save(const std::string& path, double exposure) const {
+  WriteImage(ToImage(), path, exposure);
+}
+
+}  // namespace glint

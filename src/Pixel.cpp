@@ -1,0 +1,34 @@
+#include "glint/Pixel.hpp"
+
+#include "glint/Camera.hpp"
+
+namespace glint {
+
+void Pixel::Render(const Camera& camera, int x, int y, int rays, const Integrator& integrator,
+                   Pcg32& rng, RayTree& trees, RenderStats& stats, bool keepTrees) {
+  const double importance = 1.0 / rays;  // all rays of a pixel weigh the same
+  Colour sum(0.0);
+  trees.Clear();
+  for (int i = 0; i < rays; ++i) {
+    if (!keepTrees) trees.Clear();
+    const double px = x + rng.Uniform();  // a random point inside the pixel
+    const double py = y + rng.Uniform();
+    Ray ray;
+    ray.start = camera.Eye();
+    ray.direction = camera.DirectionThrough(px, py);
+    ray.weight = Colour(importance);
+    ray.importance = Colour(importance);
+    ray.kind = RayKind::Camera;
+    const std::uint32_t root = trees.Add(ray);
+    ++stats.cameraRays;
+    const Colour c = integrator.Trace(trees, root, rng, stats);
+    if (!IsFinite(c)) {  // counted and dropped, never averaged in
+      ++stats.nonFiniteSamples;
+      continue;
+    }
+    sum += importance * c;
+  }
+  radiance_ = sum;
+}
+
+}  // namespace glint

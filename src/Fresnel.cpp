@@ -3,6 +3,7 @@
 namespace glint {
 
 double FresnelDielectric(vec3 d, vec3 n, double ior) {
+  if (ior == 1.0) return 0.0;  // index matched: no boundary, exactly (round-off gives ~1e-33)
   double cosI = -glm::dot(d, n);
   double eta = ior;  // n_t / n_i for a ray arriving from outside
   if (cosI < 0.0) {  // from inside: the index ratio flips
@@ -24,6 +25,7 @@ double FresnelNormalIncidence(double ior) {
 }
 
 std::optional<vec3> Refract(vec3 d, vec3 n, double ior) {
+  if (ior == 1.0) return d;  // index matched: undeviated, exactly
   double cosI = -glm::dot(d, n);
   double eta = ior;
   if (cosI < 0.0) {  // leaving the object: flip the normal and the ratio

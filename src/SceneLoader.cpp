@@ -170,7 +170,7 @@ void ApplyOverride(nlohmann::json& document, const std::string& assignment,
                    const std::string& file) {
   const std::size_t eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0 || assignment[0] != '/') {
-    throw InputError("--set " + assignment + ": expected POINTER=VALUE with a JSON pointer, "
+    throw InputError(file + ": --set " + assignment + ": expected POINTER=VALUE with a JSON pointer, "
                      "for example --set /objects/1/ior=1.3");
   }
   const std::string pointer = assignment.substr(0, eq);
@@ -179,9 +179,20 @@ void ApplyOverride(nlohmann::json& document, const std::string& assignment,
   if (value.is_discarded()) value = text;  // not JSON: a plain string
   try {
     const nlohmann::json::json_pointer ptr(pointer);
-    if (!document.contains(ptr.parent_pointer())) {
-      throw InputError(file + ": --set " + pointer + ": the scene has no field " +
-                       ptr.parent_pointer().to_string());
+    // The deepest part of the pointer that exists, for a message that says what is missing.
+    nlohmann::json::json_pointer missing = ptr.parent_pointer();
+    while (!document.contains(missing)) {
+      nlohmann::json::json_pointer up = missing.parent_pointer();
+      if (document.contains(up) && document[up].is_array()) {
+        throw InputError(file + ": --set " + pointer + ": no element " + missing.back() +
+                         " in the array " + up.to_string() + " (it has " +
+                         std::to_string(document[up].size()) + ")");
+      }
+      if (document.contains(up)) {
+        throw InputError(file + ": --set " + pointer + ": the scene has no field " +
+                         missing.to_string());
+      }
+      missing = up;
     }
     nlohmann::json& parent = document[ptr.parent_pointer()];
     if (parent.is_array()) {

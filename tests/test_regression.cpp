@@ -1,0 +1,69 @@
+// Regression images: a low-resolution render against a committed PFM. On failure the
+// render and a difference image are written next to the test binary.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "TestScenes.hpp"
+#include "glint/Camera.hpp"
+#include "glint/ImageIO.hpp"
+#include "glint/WhittedIntegrator.hpp"
+
+namespace glint {
+namespace {
+
+using testing::BinaryPath;
+using testing::SourcePath;
+
+// Passes when the mean absolute difference is below `meanTolerance` and no more than
+// `outlierFraction` of the pixels differ by more than `pixelTolerance` (relative to
+// 1 + the reference): a sample that lands on the other side of an edge may move a
+// pixel, a wrong renderer moves many.
+void CompareWithReference(const Image& image, const std::string& name, double meanTolerance,
+                          double pixelTolerance, double outlierFraction) {
+  const std::string reference = SourcePath("tests/data/" + name + ".pfm");
+  if (!std::filesystem::exists(reference)) {
+    WritePfm(image, BinaryPath(name + ".pfm"));
+    FAIL() << "no reference " << reference << "; wrote " << BinaryPath(name + ".pfm")
+           << " (tools/update-references regenerates them all)";
+  }
+  const Image ref = ReadPfm(reference);
+  ASSERT_EQ(ref.Width(), image.Width());
+  ASSERT_EQ(ref.Height(), image.Height());
+  Image diff(ref.Width(), ref.Height());
+  double sum = 0.0;
+  int outliers = 0;
+  for (int y = 0; y < ref.Height(); ++y) {
+    for (int x = 0; x < ref.Width(); ++x) {
+      const Colour d = glm::abs(image.At(x, y) - ref.At(x, y));
+      diff.At(x, y) = d;
+      sum += d.x + d.y + d.z;
+      if (MaxComponent(d / (Colour(1.0) + ref.At(x, y))) > pixelTolerance) ++outliers;
+    }
+  }
+  const double pixels = static_cast<double>(ref.Width() * ref.Height());
+  const double mean = sum / (3.0 * pixels);
+  const bool ok = mean <= meanTolerance && outliers <= outlierFraction * pixels;
+  if (!ok) {
+    WritePfm(image, BinaryPath(name + "-actual.pfm"));
+    WritePfm(diff, BinaryPath(name + "-diff.pfm"));
+  }
+  EXPECT_TRUE(ok) << name << ": mean |difference| " << mean << " (tolerance " << meanTolerance
+                  << "), " << outliers << " pixels off by more than " << pixelTolerance
+                  << "; wrote " << BinaryPath(name + "-diff.pfm");
+}
+
+TEST(Regression, WhittedCanonical64) {
+  const Scene scene = testing::CanonicalScene();
+  Camera camera(scene.wall, scene.camera.eye, 64, 64);
+  const WhittedIntegrator integrator(scene, scene.whitted.maxDepth);
+  RenderOptions options;
+  options.raysPerPixel = 4;
+  options.seed = 1;
+  const RenderStats stats = camera.Render(integrator, options);
+  EXPECT_EQ(stats.nonFiniteSamples, 0u);
+  CompareWithReference(camera.ToImage(), "whitted-cornell-64", 1e-4, 1e-3, 0.005);
+}
+
+}  // namespace
+}  // namespace glint

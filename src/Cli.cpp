@@ -15,6 +15,7 @@
 #include "glint/Camera.hpp"
 #include "glint/ImageIO.hpp"
 #include "glint/SceneLoader.hpp"
+#include "glint/MonteCarloIntegrator.hpp"
 #include "glint/WhittedIntegrator.hpp"
 
 namespace glint {
@@ -23,7 +24,7 @@ namespace {
 
 constexpr const char* kExitCodes =
     "Exit codes: 0 success; 1 bad input (scene file, --set or option value); "
-    "2 mode not available in this build; 3 an output file could not be written.";
+    "2 an output file could not be written.";
 
 struct RenderArgs {
   std::string scene;
@@ -37,6 +38,11 @@ struct RenderArgs {
   std::string statsPath;
   std::vector<std::string> overrides;
   bool quiet = false;
+  std::string walls = "terminal";
+  std::string glass = "split";
+  std::string fresnel = "exact";
+  std::string strategy = "mis";
+  int branches = 1;
 };
 
 // "N" or "WxH" into width and height.
@@ -102,19 +108,32 @@ std::string StatsJson(const RenderArgs& args, const Camera& camera, int spp, int
   j["camera_paths_per_second"] =
       seconds > 0.0 ? static_cast<double>(s.cameraRays) / seconds : 0.0;
   j["nonfinite_samples"] = s.nonFiniteSamples;
+  if (args.mode == "mc") {
+    j["mc"] = {{"walls", args.walls},     {"glass", args.glass},       {"fresnel", args.fresnel},
+               {"strategy", args.strategy}, {"branches", args.branches}};
+  }
   j["view_plane_distance"] = camera.ViewPlaneDistance();
   return j.dump(2) + "\n";
 }
 
+MonteCarloOptions McOptions(const RenderArgs& args, const ModeSettings& mode) {
+  using O = MonteCarloOptions;
+  O o;
+  o.walls = args.walls == "diffuse" ? O::Walls::Diffuse : O::Walls::Terminal;
+  o.glass = args.glass == "choose" ? O::Glass::Choose : O::Glass::Split;
+  o.fresnel = args.fresnel == "small-angle" ? O::Fresnel::SmallAngle : O::Fresnel::Exact;
+  o.strategy = args.strategy == "light"  ? O::Strategy::Light
+               : args.strategy == "brdf" ? O::Strategy::Brdf
+                                         : O::Strategy::Mis;
+  o.branches = args.branches;
+  o.maxDepth = mode.maxDepth;
+  return o;
+}
+
 int Render(const RenderArgs& args) {
-  if (args.mode == "mc") {
-    std::fprintf(stderr,
-                 "glint: --mode mc: Monte Carlo mode is not available in this build yet; "
-                 "use --mode whitted\n");
-    return kExitUnavailable;
-  }
-  Scene scene = LoadScene(args.scene, args.overrides);
-  const ModeSettings& mode = scene.whitted;
+  const Scene scene = LoadScene(args.scene, args.overrides);
+  const bool mc = args.mode == "mc";
+  const ModeSettings& mode = mc ? scene.mc : scene.whitted;
   int width = scene.camera.width;
   int height = scene.camera.height;
   if (!args.size.empty()) ParseSize(args.size, width, height);
@@ -128,7 +147,12 @@ int Render(const RenderArgs& args) {
   if (!args.statsPath.empty()) CheckWritable(args.statsPath);
 
   Camera camera(scene.wall, scene.camera.eye, width, height);
-  const WhittedIntegrator integrator(scene, mode.maxDepth);
+  std::unique_ptr<Integrator> integrator;
+  if (mc) {
+    integrator = std::make_unique<MonteCarloIntegrator>(scene, McOptions(args, mode));
+  } else {
+    integrator = std::make_unique<WhittedIntegrator>(scene, mode.maxDepth);
+  }
   ProgressBar bar(!args.quiet && StderrIsTerminal());
   RenderOptions options;
   options.raysPerPixel = spp;
@@ -138,7 +162,7 @@ int Render(const RenderArgs& args) {
   const int threads = args.threads > 0 ? args.threads : omp_get_max_threads();
 
   const auto start = std::chrono::steady_clock::now();
-  const RenderStats stats = camera.Render(integrator, options);
+  const RenderStats stats = camera.Render(*integrator, options);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   bar.Finish();
@@ -156,12 +180,13 @@ int Render(const RenderArgs& args) {
     const double total = static_cast<double>(stats.TotalRays());
     std::fprintf(stderr,
                  "glint: %s %dx%d, %d rays/pixel, %d thread%s: %.3f s, %.3g rays "
-                 "(camera %.3g, reflected %.3g, refracted %.3g, shadow %.3g), %.2f Mrays/s%s\n",
+                 "(camera %.3g, reflected %.3g, refracted %.3g, diffuse %.3g, shadow %.3g), "
+                 "%.2f Mrays/s%s\n",
                  args.mode.c_str(), width, height, spp, threads, threads == 1 ? "" : "s",
                  seconds, total, static_cast<double>(stats.cameraRays),
                  static_cast<double>(stats.reflectedRays),
                  static_cast<double>(stats.refractedRays),
-                 static_cast<double>(stats.shadowRays), total / seconds / 1e6,
+                 static_cast<double>(stats.diffuseRays), static_cast<double>(stats.shadowRays), total / seconds / 1e6,
                  stats.nonFiniteSamples > 0
                      ? (", " + std::to_string(stats.nonFiniteSamples) + " NaN/Inf samples dropped")
                            .c_str()
@@ -214,6 +239,31 @@ int RunCli(int argc, char** argv) {
   render->add_option("--set", args.overrides,
                      "Override a scene value by JSON pointer, repeatable: "
                      "--set /objects/1/ior=1.3");
+  render->add_option("--walls", args.walls,
+                     "Monte Carlo: 'terminal' walls spawn no child and return their direct "
+                     "light (the design's default); 'diffuse' walls also spawn a "
+                     "cosine-distributed child (full global illumination)")
+      ->check(CLI::IsMember({"terminal", "diffuse"}))
+      ->capture_default_str();
+  render->add_option("--branches", args.branches,
+                     "Monte Carlo: children spawned at each Phong object hit")
+      ->check(CLI::Range(1, MonteCarloIntegrator::kMaxBranches))
+      ->capture_default_str();
+  render->add_option("--glass", args.glass,
+                     "Monte Carlo: 'split' glass spawns a reflected and a refracted child "
+                     "weighted by Fresnel; 'choose' spawns one, chosen with Fresnel probability")
+      ->check(CLI::IsMember({"split", "choose"}))
+      ->capture_default_str();
+  render->add_option("--fresnel", args.fresnel,
+                     "Monte Carlo: 'exact' Fresnel equations, or 'small-angle': the "
+                     "normal-incidence reflectance ((n-1)/(n+1))^2 at every angle")
+      ->check(CLI::IsMember({"exact", "small-angle"}))
+      ->capture_default_str();
+  render->add_option("--strategy", args.strategy,
+                     "Monte Carlo, at Phong objects: 'mis' (light and BRDF sampling, power "
+                     "heuristic), 'light' (light sampling only) or 'brdf' (BRDF sampling only)")
+      ->check(CLI::IsMember({"mis", "light", "brdf"}))
+      ->capture_default_str();
   render->add_flag("-q,--quiet", args.quiet, "No progress bar and no summary line");
 
   try {

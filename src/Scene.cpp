@@ -39,6 +39,20 @@ bool Scene::VisibleThroughTransparent(vec3 p, vec3 q) const {
   return true;
 }
 
+bool Scene::Occluded(vec3 p, vec3 q) const {
+  const vec3 toQ = q - p;
+  const double distance = glm::length(toQ);
+  if (distance == 0.0) return false;
+  const vec3 d = toQ / distance;
+  for (const Sphere& s : spheres) {
+    if (s.IntersectAny(p, d, distance)) return true;
+  }
+  for (const Cube& c : cubes) {
+    if (c.IntersectAny(p, d, distance)) return true;
+  }
+  return false;  // the room is convex: no wall stands between two points inside it
+}
+
 const std::string& Scene::ObjectName(int object) const {
   static const std::string kNone = "none";
   if (object < 0 || object >= static_cast<int>(objectNames.size())) return kNone;

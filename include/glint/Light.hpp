@@ -7,6 +7,15 @@
 
 namespace glint {
 
+// A point on the light chosen for a shading point p, as seen from p.
+struct LightSample {
+  vec3 point;     // y on the light
+  vec3 wi;        // unit direction from p to y
+  double distance;
+  double pdf;     // solid-angle density of wi: |p - y|^2 / (cos(theta_y) A); 0 if unusable
+  Colour Le;      // radiance leaving y toward p
+};
+
 class Light {
  public:
   Light(Rectangle shape, Colour radiance, int object);
@@ -19,6 +28,12 @@ class Light {
   // Emitted radiance toward direction w (unit, leaving the light).
   Colour Le(vec3 w) const { return glm::dot(w, shape_.Normal()) > 0.0 ? radiance_ : Colour(0.0); }
   Colour Radiance() const { return radiance_; }
+
+  // Next-event estimation: a uniform point on the light, with its density converted from
+  // area (1/A) to solid angle at p: p(w) = r^2 / (cos(theta_y) A).
+  LightSample SampleLi(vec3 p, double u, double v) const;
+  // The same density for a direction from p that hits the light at y.
+  double PdfLi(vec3 p, vec3 y) const;
   const Rectangle& Shape() const { return shape_; }
   int Object() const { return object_; }
 

@@ -22,6 +22,10 @@ struct Ray {
   Colour weight{1.0};              // W_i relative to the parent
   Colour importance{1.0};          // product of the weights from the camera down
   Colour colour{0.0};              // radiance brought back, C_R
+  // Monte Carlo: solid-angle density the direction was sampled with, times the number
+  // of sibling samples (for multiple importance sampling); 0 for a direction that was
+  // not sampled from a density (camera, mirror, glass).
+  double pdf = 0.0;
   std::uint32_t firstChild = kNoChild;  // children are contiguous in the RayTree
   std::uint32_t childCount = 0;
   std::int32_t object = -1;  // scene object it hit (-1: nothing, it left the room)

@@ -49,6 +49,10 @@ class Scene {
   // stand between two points inside it.
   bool VisibleThroughTransparent(vec3 p, vec3 q) const;
 
+  // Monte Carlo shadow ray from p toward a point q on the light: blocked by every
+  // object, glass included (light through glass arrives only as a caustic).
+  bool Occluded(vec3 p, vec3 q) const;
+
   const std::string& ObjectName(int object) const;
 };
 

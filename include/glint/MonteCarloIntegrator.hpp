@@ -1,0 +1,66 @@
+// Monte Carlo mode: the area light with next-event estimation, the normalised Phong
+// BRDF with lobe sampling and multiple importance sampling, mirrors, Fresnel glass,
+// Lambertian walls (terminal or diffuse), Russian roulette by throughput.
+#pragma once
+
+#include "glint/Hit.hpp"
+#include "glint/Integrator.hpp"
+#include "glint/Scene.hpp"
+
+namespace glint {
+
+struct MonteCarloOptions {
+  enum class Walls { Terminal, Diffuse };
+  enum class Glass { Split, Choose };
+  enum class Fresnel { Exact, SmallAngle };
+  enum class Strategy { Mis, Light, Brdf };
+
+  Walls walls = Walls::Terminal;  // terminal: a wall hit spawns no child (the design)
+  Glass glass = Glass::Split;     // split: reflect and refract; choose: one, by Fresnel
+  Fresnel fresnel = Fresnel::Exact;
+  Strategy strategy = Strategy::Mis;  // at Phong object hits
+  int branches = 1;                   // children of a Phong object hit
+  int maxDepth = 64;                  // a safety cap; Russian roulette ends paths first
+};
+
+class MonteCarloIntegrator final : public Integrator {
+ public:
+  static constexpr int kMaxBranches = 64;
+
+  // Throws std::invalid_argument if the scene has no area light.
+  MonteCarloIntegrator(const Scene& scene, MonteCarloOptions options);
+
+  Colour Trace(RayTree& tree, std::uint32_t root, Pcg32& rng,
+               RenderStats& stats) const override;
+
+  // Direct light at a surface point from one random point on the light:
+  // Le f cos(theta) / p(w), with f the BRDF for the incident direction d.
+  Colour DirectLight(const Hit& hit, vec3 d, vec3 n, double misBranches, Pcg32& rng,
+                     RenderStats& stats) const;
+
+  const MonteCarloOptions& Options() const { return options_; }
+
+ private:
+  struct Candidate {
+    vec3 direction;
+    Colour weight;
+    double pdf;
+    RayKind kind;
+    bool inside;
+  };
+
+  Colour TraceNode(RayTree& tree, std::uint32_t index, double rootScale, Pcg32& rng,
+                   RenderStats& stats) const;
+  // How much of the light's emission a ray that hit it counts: 1, an MIS weight, or 0
+  // where next-event estimation has counted it already.
+  double EmissionWeight(const Ray& ray, vec3 lightPoint) const;
+  // Candidate children of a hit (before Russian roulette); returns their number.
+  int Scatter(const Ray& ray, const Hit& hit, vec3 n, Pcg32& rng, Candidate* out) const;
+  double GlassReflectance(vec3 d, vec3 normal, double ior) const;
+
+  const Scene& scene_;
+  const Light& light_;
+  MonteCarloOptions options_;
+};
+
+}  // namespace glint

@@ -1,0 +1,196 @@
+#include "glint/MonteCarloIntegrator.hpp"
+
+#include <stdexcept>
+
+#include "glint/Fresnel.hpp"
+#include "glint/Phong.hpp"
+#include "glint/Sampling.hpp"
+
+namespace glint {
+
+namespace {
+const Light& RequireLight(const Scene& scene) {
+  if (!scene.light) throw std::invalid_argument("Monte Carlo mode needs an area_light in the scene");
+  return *scene.light;
+}
+}  // namespace
+
+MonteCarloIntegrator::MonteCarloIntegrator(const Scene& scene, MonteCarloOptions options)
+    : scene_(scene), light_(RequireLight(scene)), options_(options) {
+  if (options_.branches < 1 || options_.branches > kMaxBranches) {
+    throw std::invalid_argument("branches must be in [1, 64]");
+  }
+}
+
+Colour MonteCarloIntegrator::Trace(RayTree& tree, std::uint32_t root, Pcg32& rng,
+                                   RenderStats& stats) const {
+  // Russian roulette looks at throughput relative to the camera ray, whose importance
+  // is 1/N: rootScale = N.
+  const double rootImportance = MaxComponent(tree[root].importance);
+  return TraceNode(tree, root, rootImportance > 0.0 ? 1.0 / rootImportance : 1.0, rng, stats);
+}
+
+double MonteCarloIntegrator::EmissionWeight(const Ray& ray, vec3 lightPoint) const {
+  using Strategy = MonteCarloOptions::Strategy;
+  if (ray.kind == RayKind::Diffuse) return 0.0;  // walls count the light by NEE only
+  if (ray.pdf == 0.0) return 1.0;  // camera, mirror and glass directions: nothing else sees it
+  switch (options_.strategy) {
+    case Strategy::Light:
+      return 0.0;
+    case Strategy::Brdf:
+      return 1.0;
+    case Strategy::Mis:
+      break;
+  }
+  return PowerHeuristic(ray.pdf, light_.PdfLi(ray.start, lightPoint));
+}
+
+Colour MonteCarloIntegrator::DirectLight(const Hit& hit, vec3 d, vec3 n, double misBranches,
+                                         Pcg32& rng, RenderStats& stats) const {
+  const Material& m = *hit.material;
+  const double u = rng.Uniform();
+  const double v = rng.Uniform();
+  const LightSample ls = light_.SampleLi(hit.point, u, v);
+  const double cosTheta = glm::dot(n, ls.wi);
+  if (ls.pdf == 0.0 || cosTheta <= 0.0) return Colour(0.0);
+  const Colour f = m.type == MaterialType::Lambertian ? m.reflectance * kInvPi
+                                                      : PhongBrdf(m, d, n, ls.wi);
+  if (f == Colour(0.0)) return Colour(0.0);
+  ++stats.shadowRays;
+  if (scene_.Occluded(OffsetRayOrigin(hit.point, n, ls.wi), ls.point)) return Colour(0.0);
+  double w = 1.0;
+  if (misBranches > 0.0) {  // MIS against `misBranches` BRDF samples
+    w = PowerHeuristic(ls.pdf, misBranches * PhongPdf(m, d, n, ls.wi));
+  }
+  return w * ls.Le * f * (cosTheta / ls.pdf);
+}
+
+double MonteCarloIntegrator::GlassReflectance(vec3 d, vec3 normal, double ior) const {
+  const double exact = FresnelDielectric(d, normal, ior);
+  if (options_.fresnel == MonteCarloOptions::Fresnel::Exact || exact == 1.0) return exact;
+  return FresnelNormalIncidence(ior);  // small-angle: R0 at every angle (TIR kept)
+}
+
+int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, Pcg32& rng,
+                                  Candidate* out) const {
+  const Material& m = *hit.material;
+  const vec3 d = ray.direction;
+  switch (m.type) {
+    case MaterialType::Lambertian: {
+      if (options_.walls == MonteCarloOptions::Walls::Terminal) return 0;
+      // Cosine sampling: f cos / p = (rho / pi) cos / (cos / pi) = rho.
+      const vec3 w = Frame::FromZ(n).ToWorld(SampleCosineHemisphere(rng.Uniform(), rng.Uniform()));
+      out[0] = {glm::normalize(w), m.reflectance, 0.0, RayKind::Diffuse, ray.inside};
+      return 1;
+    }
+    case MaterialType::Phong: {
+      const int k = options_.branches;
+      for (int i = 0; i < k; ++i) {
+        const PhongSample s = SamplePhong(m, d, n, rng.Uniform(), rng.Uniform());
+        out[i] = {s.direction, s.weight / static_cast<double>(k), k * s.pdf, RayKind::Reflected,
+                  ray.inside};
+      }
+      return k;
+    }
+    case MaterialType::Mirror:
+      out[0] = {glm::normalize(Reflect(d, n)), m.reflectance, 0.0, RayKind::Reflected, ray.inside};
+      return 1;
+    case MaterialType::Glass: {
+      const vec3 mirror = glm::normalize(Reflect(d, hit.normal));
+      const std::optional<vec3> refracted = Refract(d, hit.normal, m.ior);
+      const double f = refracted ? GlassReflectance(d, hit.normal, m.ior) : 1.0;
+      if (options_.glass == MonteCarloOptions::Glass::Choose) {
+        // One child, reflection with probability F: weight F / F = (1 - F) / (1 - F) = 1.
+        if (!refracted || rng.Uniform() < f) {
+          out[0] = {mirror, Colour(1.0), 0.0, RayKind::Reflected, ray.inside};
+        } else {
+          out[0] = {*refracted, Colour(1.0), 0.0, RayKind::Refracted, !ray.inside};
+        }
+        return 1;
+      }
+      int count = 0;
+      if (f > 0.0) out[count++] = {mirror, Colour(f), 0.0, RayKind::Reflected, ray.inside};
+      if (refracted && f < 1.0) {
+        out[count++] = {*refracted, Colour(1.0 - f), 0.0, RayKind::Refracted, !ray.inside};
+      }
+      return count;
+    }
+  }
+  return 0;
+}
+
+Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, double rootScale,
+                                       Pcg32& rng, RenderStats& stats) const {
+  const Ray ray = tree[index];
+  Hit hit;
+  if (!scene_.Intersect(ray.start, ray.direction, hit, /*withAreaLight=*/true)) {
+    tree[index].final = true;  // out through the open front: radiance 0
+    tree[index].end = ray.start;
+    tree[index].colour = Colour(0.0);
+    return Colour(0.0);
+  }
+  tree[index].end = hit.point;
+  tree[index].object = hit.object;
+  if (hit.light) {  // the light emits and reflects nothing
+    const Colour c = EmissionWeight(ray, hit.point) * light_.Le(-ray.direction);
+    tree[index].final = true;
+    tree[index].colour = c;
+    return c;
+  }
+
+  const Material& m = *hit.material;
+  const vec3 n = glm::dot(ray.direction, hit.normal) < 0.0 ? hit.normal : -hit.normal;
+  Colour colour(0.0);
+  // Next-event estimation at walls (always) and Phong objects (unless BRDF-only).
+  using Strategy = MonteCarloOptions::Strategy;
+  if (m.type == MaterialType::Lambertian) {
+    colour += DirectLight(hit, ray.direction, n, 0.0, rng, stats);
+  } else if (m.type == MaterialType::Phong && options_.strategy != Strategy::Brdf) {
+    const double misBranches =
+        options_.strategy == Strategy::Mis ? static_cast<double>(options_.branches) : 0.0;
+    colour += DirectLight(hit, ray.direction, n, misBranches, rng, stats);
+  }
+
+  Candidate candidates[kMaxBranches];
+  int count = ray.depth + 1 < options_.maxDepth ? Scatter(ray, hit, n, rng, candidates) : 0;
+  // Russian roulette by throughput: survive with q = min(1, beta), then divide by q.
+  int kept = 0;
+  for (int i = 0; i < count; ++i) {
+    Candidate c = candidates[i];
+    const double beta = MaxComponent(ray.importance * c.weight) * rootScale;
+    if (!(beta > 0.0)) continue;
+    if (beta < 1.0) {
+      if (rng.Uniform() >= beta) continue;
+      c.weight /= beta;
+    }
+    candidates[kept++] = c;
+  }
+  const std::uint32_t first = kept > 0 ? tree.AddChildren(index, static_cast<std::uint32_t>(kept)) : 0;
+  for (int i = 0; i < kept; ++i) {
+    const Candidate& c = candidates[i];
+    Ray& child = tree[first + static_cast<std::uint32_t>(i)];
+    child.start = OffsetRayOrigin(hit.point, hit.normal, c.direction);  // to the side it leaves on
+    child.direction = c.direction;
+    child.weight = c.weight;
+    child.importance = ray.importance * c.weight;
+    child.pdf = c.pdf;
+    child.kind = c.kind;
+    child.inside = c.inside;
+    child.depth = static_cast<std::uint8_t>(ray.depth + 1);
+    switch (c.kind) {
+      case RayKind::Refracted: ++stats.refractedRays; break;
+      case RayKind::Diffuse: ++stats.diffuseRays; break;
+      default: ++stats.reflectedRays; break;
+    }
+  }
+  for (int i = 0; i < kept; ++i) {
+    const std::uint32_t ci = first + static_cast<std::uint32_t>(i);
+    const Colour c = TraceNode(tree, ci, rootScale, rng, stats);
+    colour += tree[ci].weight * c;  // C_R = L_local + sum W_i C_i
+  }
+  tree[index].final = kept == 0;
+  tree[index].colour = colour;
+  return colour;
+}
+
+}  // namespace glint

@@ -1,0 +1,244 @@
+// Monte Carlo mode, verified by statistics: analytic values, an albedo by quadrature,
+// and agreement of independent estimators within their error bars.
+#include <gtest/gtest.h>
+
+#include "Statistics.hpp"
+#include "TestScenes.hpp"
+#include "glint/Camera.hpp"
+#include "glint/MonteCarloIntegrator.hpp"
+#include "glint/Phong.hpp"
+
+namespace glint {
+namespace {
+
+using testing::CanonicalScene;
+using testing::MeanAndError;
+
+// Radiance along one ray, estimated `n` times.
+MeanAndError EstimateRadiance(const MonteCarloIntegrator& integrator, vec3 start, vec3 d, int n,
+                              int channel, std::uint64_t seed) {
+  RayTree tree;
+  RenderStats stats;
+  Pcg32 rng(seed, 9);
+  MeanAndError m;
+  for (int i = 0; i < n; ++i) {
+    tree.Clear();
+    Ray ray;
+    ray.start = start;
+    ray.direction = glm::normalize(d);
+    const std::uint32_t root = tree.Add(ray);
+    m.Add(integrator.Trace(tree, root, rng, stats)[channel]);
+  }
+  return m;
+}
+
+// Integral of cos(theta) over the solid angle of a polygon seen from p with normal n
+// (Lambert): 1/2 sum_i angle(u_i, u_i+1) n . normalize(u_i x u_i+1).
+double PolygonCosineIntegral(vec3 p, vec3 n, const std::vector<vec3>& vertices) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    const vec3 a = glm::normalize(vertices[i] - p);
+    const vec3 b = glm::normalize(vertices[(i + 1) % vertices.size()] - p);
+    sum += std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)) *
+           glm::dot(n, glm::normalize(glm::cross(a, b)));
+  }
+  return 0.5 * std::abs(sum);
+}
+
+TEST(MonteCarlo, UnoccludedWallRadianceMatchesLambertsFormula) {
+  const Scene scene = CanonicalScene({"/objects=[]"});
+  const MonteCarloIntegrator integrator(scene, {});
+  const Rectangle& light = scene.light->Shape();
+  const std::vector<vec3> corners = {light.PointFromUV(0, 0), light.PointFromUV(1, 0),
+                                     light.PointFromUV(1, 1), light.PointFromUV(0, 1)};
+  struct Case {
+    vec3 point, normal, viewFrom;
+    double rho;
+    int channel;
+  };
+  const Case cases[] = {
+      {vec3(0.3, 0.0, 0.6), vec3(0, 1, 0), vec3(0.3, 0.5, 0.6), 0.75, 0},   // floor
+      {vec3(0.7, 0.3, 0.0), vec3(0, 0, 1), vec3(0.7, 0.3, 0.5), 0.75, 1},   // back wall
+      {vec3(0.0, 0.8, 0.5), vec3(1, 0, 0), vec3(0.5, 0.8, 0.5), 0.75, 0},   // left wall, red
+      {vec3(1.0, 0.95, 0.2), vec3(-1, 0, 0), vec3(0.5, 0.95, 0.2), 0.75, 1}  // right, grazing
+  };
+  std::uint64_t seed = 1;
+  for (const Case& c : cases) {
+    const double expected = c.rho * kInvPi * 50.0 * PolygonCosineIntegral(c.point, c.normal, corners);
+    const MeanAndError m =
+        EstimateRadiance(integrator, c.viewFrom, c.point - c.viewFrom, 200000, c.channel, seed++);
+    // The test can see a 1% bias: three standard errors are well below 1%.
+    ASSERT_LT(3.0 * m.StandardError(), 0.01 * expected);
+    EXPECT_NEAR(m.mean, expected, 3.0 * m.StandardError())
+        << "at (" << c.point.x << ", " << c.point.y << ", " << c.point.z << ")";
+  }
+}
+
+double PhongAlbedoByQuadrature(const Material& m, vec3 d, vec3 n) {
+  // In the frame of the mirror direction R, alpha = (pi/2) s^2 crowds the nodes near the
+  // lobe's axis; dw = sin(alpha) dalpha dphi.
+  const Frame f = Frame::FromZ(Reflect(d, n));
+  constexpr int kS = 3000;
+  constexpr int kPhi = 720;
+  double sum = 0.0;
+  for (int i = 0; i < kS; ++i) {
+    const double s = (i + 0.5) / kS;
+    const double alpha = 0.5 * kPi * s * s;
+    const double dAlpha = kPi * s / kS;
+    for (int j = 0; j < kPhi; ++j) {
+      const double phi = 2.0 * kPi * (j + 0.5) / kPhi;
+      const vec3 psi = f.ToWorld(vec3(std::sin(alpha) * std::cos(phi),
+                                      std::sin(alpha) * std::sin(phi), std::cos(alpha)));
+      const double cosTheta = glm::dot(n, psi);
+      if (cosTheta > 0.0) sum += PhongBrdf(m, d, n, psi).x * cosTheta * std::sin(alpha) * dAlpha;
+    }
+  }
+  return sum * 2.0 * kPi / kPhi;
+}
+
+TEST(MonteCarlo, PhongAlbedoAgreesWithQuadratureAndNeverExceedsRho) {
+  const vec3 n(0, 0, 1);
+  Pcg32 rng(21, 4);
+  for (double exponent : {1.0, 10.0, 100.0, 1000.0}) {
+    for (double incidence : {0.0, 45.0, 80.0}) {
+      Material m;
+      m.type = MaterialType::Phong;
+      m.reflectance = Colour(0.8);
+      m.exponent = exponent;
+      const double th = incidence * kPi / 180.0;
+      const vec3 d(std::sin(th), 0.0, -std::cos(th));
+      const double quadrature = PhongAlbedoByQuadrature(m, d, n);
+      MeanAndError mc;
+      for (int i = 0; i < 200000; ++i) mc.Add(SamplePhong(m, d, n, rng.Uniform(), rng.Uniform()).weight.x);
+      const std::string what = "n = " + std::to_string(exponent) + ", " + std::to_string(incidence) + " deg";
+      EXPECT_LE(quadrature, 0.8 * (1.0 + 1e-4)) << what;
+      EXPECT_LE(mc.mean, 0.8 + 3.0 * mc.StandardError()) << what;
+      EXPECT_NEAR(mc.mean, quadrature, 4.0 * mc.StandardError() + 1e-4 * quadrature) << what;
+      if (incidence == 0.0) {
+        EXPECT_NEAR(quadrature, 0.8, 2e-4) << what;  // exactly rho at normal incidence
+      }
+      if (exponent >= 10.0) {  // the comparison can see a 1% bias
+        ASSERT_LT(4.0 * mc.StandardError(), 0.01 * quadrature) << what;
+      }
+    }
+  }
+}
+
+TEST(MonteCarlo, TerminalCeilingIsBlackTheLightIsLeAndDiffuseWallsLightTheCeiling) {
+  const Scene scene = CanonicalScene();
+  const MonteCarloIntegrator terminal(scene, {});
+  MonteCarloOptions diffuseOptions;
+  diffuseOptions.walls = MonteCarloOptions::Walls::Diffuse;
+  const MonteCarloIntegrator diffuse(scene, diffuseOptions);
+  const vec3 eye(0.5, 0.5, 2.5);
+  const vec3 ceiling(0.2, 1.0, 0.3);
+  EXPECT_EQ(EstimateRadiance(terminal, eye, ceiling - eye, 1000, 0, 1).mean, 0.0);
+  EXPECT_GT(EstimateRadiance(diffuse, eye, ceiling - eye, 1000, 0, 1).mean, 0.01);
+  const MeanAndError le = EstimateRadiance(terminal, eye, vec3(0.5, 1.0, 0.5) - eye, 10, 1, 1);
+  EXPECT_EQ(le.mean, 50.0);
+  EXPECT_EQ(le.StandardError(), 0.0);
+}
+
+// Block means of `runs` independent renders (different seeds) of a small image.
+struct BlockEstimates {
+  std::vector<MeanAndError> blocks;  // block-major, 3 channels each
+};
+
+BlockEstimates RenderBlocks(const Scene& scene, MonteCarloOptions options, int size, int block,
+                            int spp, int runs, std::uint64_t seedBase) {
+  const MonteCarloIntegrator integrator(scene, options);
+  const int nb = size / block;
+  BlockEstimates out;
+  out.blocks.resize(static_cast<std::size_t>(nb * nb * 3));
+  for (int r = 0; r < runs; ++r) {
+    Camera camera(scene.wall, scene.camera.eye, size, size);
+    RenderOptions ro;
+    ro.raysPerPixel = spp;
+    ro.seed = seedBase + static_cast<std::uint64_t>(r);
+    const RenderStats stats = camera.Render(integrator, ro);
+    EXPECT_EQ(stats.nonFiniteSamples, 0u);
+    for (int by = 0; by < nb; ++by) {
+      for (int bx = 0; bx < nb; ++bx) {
+        Colour sum(0.0);
+        for (int y = by * block; y < (by + 1) * block; ++y) {
+          for (int x = bx * block; x < (bx + 1) * block; ++x) sum += camera.PixelAt(x, y).Radiance();
+        }
+        for (int k = 0; k < 3; ++k) {
+          out.blocks[static_cast<std::size_t>((by * nb + bx) * 3 + k)].Add(sum[k] / (block * block));
+        }
+      }
+    }
+  }
+  return out;
+}
+
+TEST(MonteCarlo, LightBrdfAndMisSamplingAgreeBlockByBlock) {
+  // O1 and O3 with a low exponent, where light sampling and BRDF sampling both matter.
+  const Scene scene = CanonicalScene({"/objects/0/exponent=5", "/objects/2/exponent=20"});
+  using S = MonteCarloOptions::Strategy;
+  MonteCarloOptions o;
+  o.strategy = S::Mis;
+  const BlockEstimates mis = RenderBlocks(scene, o, 32, 8, 32, 8, 100);
+  o.strategy = S::Light;
+  const BlockEstimates light = RenderBlocks(scene, o, 32, 8, 32, 8, 200);
+  o.strategy = S::Brdf;
+  const BlockEstimates brdf = RenderBlocks(scene, o, 32, 8, 32, 8, 300);
+  o.strategy = S::Mis;
+  o.branches = 3;
+  const BlockEstimates branched = RenderBlocks(scene, o, 32, 8, 12, 8, 400);
+  // |z| bound for 4 x 48 comparisons at family level 0.01 (Sidak): about 4.0.
+  const double zMax = 4.0;
+  const std::pair<const BlockEstimates*, const char*> others[] = {
+      {&light, "light"}, {&brdf, "brdf"}, {&branched, "mis, 3 branches"}};
+  for (const auto& [other, name] : others) {
+    for (std::size_t i = 0; i < mis.blocks.size(); ++i) {
+      const MeanAndError& a = mis.blocks[i];
+      const MeanAndError& b = other->blocks[i];
+      const double se = std::sqrt(a.StandardError() * a.StandardError() +
+                                  b.StandardError() * b.StandardError());
+      EXPECT_LE(std::abs(a.mean - b.mean), zMax * se + 1e-12)
+          << name << " block " << i / 3 << " channel " << i % 3 << ": " << a.mean << " vs "
+          << b.mean;
+    }
+  }
+}
+
+TEST(MonteCarlo, GlassSplitAndChooseAgree) {
+  const Scene scene = CanonicalScene();
+  MonteCarloOptions o;
+  const BlockEstimates split = RenderBlocks(scene, o, 32, 8, 32, 8, 500);
+  o.glass = MonteCarloOptions::Glass::Choose;
+  const BlockEstimates choose = RenderBlocks(scene, o, 32, 8, 32, 8, 600);
+  for (std::size_t i = 0; i < split.blocks.size(); ++i) {
+    const double se = std::hypot(split.blocks[i].StandardError(), choose.blocks[i].StandardError());
+    EXPECT_LE(std::abs(split.blocks[i].mean - choose.blocks[i].mean), 4.0 * se + 1e-12)
+        << "block " << i / 3 << " channel " << i % 3;
+  }
+}
+
+TEST(MonteCarlo, NoNonFiniteSamplesInAnyMode) {
+  const Scene scene = CanonicalScene();
+  using O = MonteCarloOptions;
+  for (O::Walls walls : {O::Walls::Terminal, O::Walls::Diffuse}) {
+    for (O::Strategy strategy : {O::Strategy::Mis, O::Strategy::Light, O::Strategy::Brdf}) {
+      for (O::Glass glass : {O::Glass::Split, O::Glass::Choose}) {
+        O o;
+        o.walls = walls;
+        o.strategy = strategy;
+        o.glass = glass;
+        o.fresnel = glass == O::Glass::Split ? O::Fresnel::Exact : O::Fresnel::SmallAngle;
+        o.branches = strategy == O::Strategy::Mis ? 2 : 1;
+        const MonteCarloIntegrator integrator(scene, o);
+        Camera camera(scene.wall, scene.camera.eye, 24, 24);
+        RenderOptions ro;
+        ro.raysPerPixel = 4;
+        const RenderStats stats = camera.Render(integrator, ro);
+        EXPECT_EQ(stats.nonFiniteSamples, 0u);
+        for (const Colour& c : camera.ToImage().Pixels()) ASSERT_TRUE(IsFinite(c));
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace glint

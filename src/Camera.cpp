@@ -49,10 +49,9 @@ vec3 Camera::DirectionThrough(double px, double py) const {
 
 RenderStats Camera::Render(const Integrator& integrator, const RenderOptions& options) {
   const int count = width_ * height_;
-  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   std::atomic<std::size_t> done{0};
   RenderStats total;
-#pragma omp parallel num_threads(threads)
+#pragma omp parallel num_threads(options.threads > 0 ? options.threads : omp_get_max_threads())
   {
     RayTree trees;  // this thread's arena, reused for every pixel it renders
     RenderStats stats;
@@ -61,8 +60,8 @@ RenderStats Camera::Render(const Integrator& integrator, const RenderOptions& op
       const int x = i % width_;
       const int y = i / width_;
       Pcg32 rng = Pcg32::ForPixel(options.seed, static_cast<std::uint64_t>(i));
-      pixels_[static_cast<std::size_t>(i)].Render(*this, x, y, options.raysPerPixel,
-                                                  integrator, rng, trees, stats);
+      pixels_[static_cast<std::size_t>(i)].Render(*this, x, y, options.raysPerPixel, integrator,
+                                                  rng, trees, stats);
       const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
       if (options.progress && omp_get_thread_num() == 0 && finished % 256 == 0) {
         options.progress(finished, static_cast<std::size_t>(count));
@@ -71,8 +70,8 @@ RenderStats Camera::Render(const Integrator& integrator, const RenderOptions& op
 #pragma omp critical(glint_render_stats)
     total += stats;
   }
-  if (options.progress) options.progress(static_cast<std::size_t>(count),
-                                         static_cast<std::size_t>(count));
+  if (options.progress)
+    options.progress(static_cast<std::size_t>(count), static_cast<std::size_t>(count));
   return total;
 }
 

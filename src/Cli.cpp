@@ -14,8 +14,8 @@
 #include "Progress.hpp"
 #include "glint/Camera.hpp"
 #include "glint/ImageIO.hpp"
-#include "glint/SceneLoader.hpp"
 #include "glint/MonteCarloIntegrator.hpp"
+#include "glint/SceneLoader.hpp"
 #include "glint/WhittedIntegrator.hpp"
 
 namespace glint {
@@ -105,12 +105,14 @@ std::string StatsJson(const RenderArgs& args, const Camera& camera, int spp, int
                {"refracted", s.refractedRays}, {"diffuse", s.diffuseRays},
                {"shadow", s.shadowRays},       {"total", s.TotalRays()}};
   j["mrays_per_second"] = seconds > 0.0 ? static_cast<double>(s.TotalRays()) / seconds / 1e6 : 0.0;
-  j["camera_paths_per_second"] =
-      seconds > 0.0 ? static_cast<double>(s.cameraRays) / seconds : 0.0;
+  j["camera_paths_per_second"] = seconds > 0.0 ? static_cast<double>(s.cameraRays) / seconds : 0.0;
   j["nonfinite_samples"] = s.nonFiniteSamples;
   if (args.mode == "mc") {
-    j["mc"] = {{"walls", args.walls},     {"glass", args.glass},       {"fresnel", args.fresnel},
-               {"strategy", args.strategy}, {"branches", args.branches}};
+    j["mc"] = {{"walls", args.walls},
+               {"glass", args.glass},
+               {"fresnel", args.fresnel},
+               {"strategy", args.strategy},
+               {"branches", args.branches}};
   }
   j["view_plane_distance"] = camera.ViewPlaneDistance();
   return j.dump(2) + "\n";
@@ -178,19 +180,18 @@ int Render(const RenderArgs& args) {
   }
   if (!args.quiet) {
     const double total = static_cast<double>(stats.TotalRays());
-    std::fprintf(stderr,
-                 "glint: %s %dx%d, %d rays/pixel, %d thread%s: %.3f s, %.3g rays "
-                 "(camera %.3g, reflected %.3g, refracted %.3g, diffuse %.3g, shadow %.3g), "
-                 "%.2f Mrays/s%s\n",
-                 args.mode.c_str(), width, height, spp, threads, threads == 1 ? "" : "s",
-                 seconds, total, static_cast<double>(stats.cameraRays),
-                 static_cast<double>(stats.reflectedRays),
-                 static_cast<double>(stats.refractedRays),
-                 static_cast<double>(stats.diffuseRays), static_cast<double>(stats.shadowRays), total / seconds / 1e6,
-                 stats.nonFiniteSamples > 0
-                     ? (", " + std::to_string(stats.nonFiniteSamples) + " NaN/Inf samples dropped")
-                           .c_str()
-                     : "");
+    std::fprintf(
+        stderr,
+        "glint: %s %dx%d, %d rays/pixel, %d thread%s: %.3f s, %.3g rays "
+        "(camera %.3g, reflected %.3g, refracted %.3g, diffuse %.3g, shadow %.3g), "
+        "%.2f Mrays/s%s\n",
+        args.mode.c_str(), width, height, spp, threads, threads == 1 ? "" : "s", seconds, total,
+        static_cast<double>(stats.cameraRays), static_cast<double>(stats.reflectedRays),
+        static_cast<double>(stats.refractedRays), static_cast<double>(stats.diffuseRays),
+        static_cast<double>(stats.shadowRays), total / seconds / 1e6,
+        stats.nonFiniteSamples > 0
+            ? (", " + std::to_string(stats.nonFiniteSamples) + " NaN/Inf samples dropped").c_str()
+            : "");
   }
   return kExitOk;
 }
@@ -208,27 +209,32 @@ int RunCli(int argc, char** argv) {
   render->footer(kExitCodes);
   render->add_option("scene", args.scene, "Scene file (JSON), e.g. scenes/cornell.json")
       ->required();
-  render->add_option("--mode", args.mode,
-                     "Light transport: 'whitted' (point lights, mirrors, refraction) or 'mc' "
-                     "(Monte Carlo with the area light)")
+  render
+      ->add_option("--mode", args.mode,
+                   "Light transport: 'whitted' (point lights, mirrors, refraction) or 'mc' "
+                   "(Monte Carlo with the area light)")
       ->check(CLI::IsMember({"whitted", "mc"}))
       ->capture_default_str();
   render->add_option("--size", args.size,
                      "Image size in pixels, N (square) or WxH; default: the scene's camera "
                      "resolution (512x512 for the canonical scene)");
-  render->add_option("--spp", args.spp,
-                     "Rays per pixel, through random points inside it; default: the scene's "
-                     "value for the mode")
+  render
+      ->add_option("--spp", args.spp,
+                   "Rays per pixel, through random points inside it; default: the scene's "
+                   "value for the mode")
       ->check(CLI::Range(1, 1 << 20));
-  render->add_option("--threads", args.threads,
-                     "Worker threads; default: all cores. The image does not depend on it")
+  render
+      ->add_option("--threads", args.threads,
+                   "Worker threads; default: all cores. The image does not depend on it")
       ->check(CLI::Range(1, 4096));
-  render->add_option("--seed", args.seed,
-                     "Random seed; the same seed gives the same image for any --threads")
+  render
+      ->add_option("--seed", args.seed,
+                   "Random seed; the same seed gives the same image for any --threads")
       ->capture_default_str();
-  render->add_option("--exposure", args.exposure,
-                     "Display mapping: radiance is multiplied by this before the sRGB curve "
-                     "(PNG and PPM only); default: the scene's value for the mode")
+  render
+      ->add_option("--exposure", args.exposure,
+                   "Display mapping: radiance is multiplied by this before the sRGB curve "
+                   "(PNG and PPM only); default: the scene's value for the mode")
       ->check(CLI::PositiveNumber);
   render->add_option("-o,--output", args.outputs,
                      "Output file, repeatable; the extension picks the format: .png and .ppm "
@@ -239,29 +245,34 @@ int RunCli(int argc, char** argv) {
   render->add_option("--set", args.overrides,
                      "Override a scene value by JSON pointer, repeatable: "
                      "--set /objects/1/ior=1.3");
-  render->add_option("--walls", args.walls,
-                     "Monte Carlo: 'terminal' walls spawn no child and return their direct "
-                     "light (the design's default); 'diffuse' walls also spawn a "
-                     "cosine-distributed child (full global illumination)")
+  render
+      ->add_option("--walls", args.walls,
+                   "Monte Carlo: 'terminal' walls spawn no child and return their direct "
+                   "light (the design's default); 'diffuse' walls also spawn a "
+                   "cosine-distributed child (full global illumination)")
       ->check(CLI::IsMember({"terminal", "diffuse"}))
       ->capture_default_str();
-  render->add_option("--branches", args.branches,
-                     "Monte Carlo: children spawned at each Phong object hit")
+  render
+      ->add_option("--branches", args.branches,
+                   "Monte Carlo: children spawned at each Phong object hit")
       ->check(CLI::Range(1, MonteCarloIntegrator::kMaxBranches))
       ->capture_default_str();
-  render->add_option("--glass", args.glass,
-                     "Monte Carlo: 'split' glass spawns a reflected and a refracted child "
-                     "weighted by Fresnel; 'choose' spawns one, chosen with Fresnel probability")
+  render
+      ->add_option("--glass", args.glass,
+                   "Monte Carlo: 'split' glass spawns a reflected and a refracted child "
+                   "weighted by Fresnel; 'choose' spawns one, chosen with Fresnel probability")
       ->check(CLI::IsMember({"split", "choose"}))
       ->capture_default_str();
-  render->add_option("--fresnel", args.fresnel,
-                     "Monte Carlo: 'exact' Fresnel equations, or 'small-angle': the "
-                     "normal-incidence reflectance ((n-1)/(n+1))^2 at every angle")
+  render
+      ->add_option("--fresnel", args.fresnel,
+                   "Monte Carlo: 'exact' Fresnel equations, or 'small-angle': the "
+                   "normal-incidence reflectance ((n-1)/(n+1))^2 at every angle")
       ->check(CLI::IsMember({"exact", "small-angle"}))
       ->capture_default_str();
-  render->add_option("--strategy", args.strategy,
-                     "Monte Carlo, at Phong objects: 'mis' (light and BRDF sampling, power "
-                     "heuristic), 'light' (light sampling only) or 'brdf' (BRDF sampling only)")
+  render
+      ->add_option("--strategy", args.strategy,
+                   "Monte Carlo, at Phong objects: 'mis' (light and BRDF sampling, power "
+                   "heuristic), 'light' (light sampling only) or 'brdf' (BRDF sampling only)")
       ->check(CLI::IsMember({"mis", "light", "brdf"}))
       ->capture_default_str();
   render->add_flag("-q,--quiet", args.quiet, "No progress bar and no summary line");

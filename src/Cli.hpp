@@ -6,8 +6,8 @@ namespace glint {
 // Exit codes, also listed by --help and in the README.
 enum ExitCode : int {
   kExitOk = 0,
-  kExitBadInput = 1,       // a bad scene file, override or command-line value
-  kExitOutputFailed = 2,   // an output file could not be written
+  kExitBadInput = 1,      // a bad scene file, override or command-line value
+  kExitOutputFailed = 2,  // an output file could not be written
 };
 
 int RunCli(int argc, char** argv);

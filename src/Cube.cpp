@@ -2,7 +2,7 @@
 
 namespace glint {
 
-Cube::Cube(vec3 position, double size, Material material, int object)
+Cube::Cube(vec3 position, double size, const Material& material, int object)
     : position_(position), size_(size), material_(material), object_(object) {
   const vec3 p = position;
   const vec3 q = position + vec3(size);
@@ -10,11 +10,11 @@ Cube::Cube(vec3 position, double size, Material material, int object)
   const vec3 ey(0.0, size, 0.0);
   const vec3 ez(0.0, 0.0, size);
   // Edge order chosen so that normalize(a x b) points out of the cube.
-  faces_ = {Rectangle(p, ez, ey),                 // x = min, normal -x
-            Rectangle(vec3(q.x, p.y, p.z), ey, ez),  // x = max, normal +x
-            Rectangle(p, ex, ez),                 // y = min, normal -y
-            Rectangle(vec3(p.x, q.y, p.z), ez, ex),  // y = max, normal +y
-            Rectangle(p, ey, ex),                 // z = min, normal -z
+  faces_ = {Rectangle(p, ez, ey),                     // x = min, normal -x
+            Rectangle(vec3(q.x, p.y, p.z), ey, ez),   // x = max, normal +x
+            Rectangle(p, ex, ez),                     // y = min, normal -y
+            Rectangle(vec3(p.x, q.y, p.z), ez, ex),   // y = max, normal +y
+            Rectangle(p, ey, ex),                     // z = min, normal -z
             Rectangle(vec3(p.x, p.y, q.z), ex, ey)};  // z = max, normal +z
 }
 

@@ -11,18 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#define STB_IMAGE_WRITE_STATIC
-#if defined(__GNUC__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wconversion"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#pragma GCC diagnostic ignored "-Wunused-function"
-#endif
 #include <stb_image_write.h>
-#if defined(__GNUC__)
-#pragma GCC diagnostic pop
-#endif
 
 #include "glint/JsonReader.hpp"
 
@@ -57,15 +46,15 @@ std::string EncodePfm(const Image& image) {
 
 std::string EncodePpm(const Image& image, double exposure) {
   const std::vector<std::uint8_t> display = image.ToDisplay(exposure);
-  std::string bytes = "P6\n" + std::to_string(image.Width()) + ' ' +
-                      std::to_string(image.Height()) + "\n255\n";
+  std::string bytes =
+      "P6\n" + std::to_string(image.Width()) + ' ' + std::to_string(image.Height()) + "\n255\n";
   bytes.append(display.begin(), display.end());
   return bytes;
 }
 
 void AppendToString(void* context, void* data, int size) {
   static_cast<std::string*>(context)->append(static_cast<const char*>(data),
-                                              static_cast<std::size_t>(size));
+                                             static_cast<std::size_t>(size));
 }
 
 std::string EncodePng(const Image& image, double exposure) {

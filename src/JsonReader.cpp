@@ -85,8 +85,8 @@ std::size_t EditDistance(const std::string& a, const std::string& b) {
 JsonReader::JsonReader(const nlohmann::json& value, std::string file, std::string path)
     : value_(value), file_(std::move(file)), path_(std::move(path)) {
   if (!value_.is_object()) {
-    throw InputError(file_ + ": " + (path_.empty() ? "/" : path_) +
-                     ": expected an object, found " + DescribeJson(value_));
+    throw InputError(file_ + ": " + (path_.empty() ? "/" : path_) + ": expected an object, found " +
+                     DescribeJson(value_));
   }
 }
 
@@ -123,7 +123,7 @@ std::vector<JsonReader> JsonReader::Objects(const char* key, std::size_t minSize
   return out;
 }
 
-double JsonReader::Number(const char* key, Range range) const {
+double JsonReader::Number(const char* key, const Range& range) const {
   const nlohmann::json& v = Field(key);
   if (!v.is_number()) Fail(key, "a number " + range.Describe(), DescribeJson(v));
   const auto x = v.get<double>();
@@ -131,11 +131,11 @@ double JsonReader::Number(const char* key, Range range) const {
   return x;
 }
 
-double JsonReader::NumberOr(const char* key, double fallback, Range range) const {
+double JsonReader::NumberOr(const char* key, double fallback, const Range& range) const {
   return Has(key) ? Number(key, range) : fallback;
 }
 
-int JsonReader::Integer(const char* key, Range range) const {
+int JsonReader::Integer(const char* key, const Range& range) const {
   const nlohmann::json& v = Field(key);
   const std::string expected = "a whole number " + range.Describe();
   if (!v.is_number_integer()) Fail(key, expected, DescribeJson(v));
@@ -146,11 +146,11 @@ int JsonReader::Integer(const char* key, Range range) const {
   return static_cast<int>(x);
 }
 
-int JsonReader::IntegerOr(const char* key, int fallback, Range range) const {
+int JsonReader::IntegerOr(const char* key, int fallback, const Range& range) const {
   return Has(key) ? Integer(key, range) : fallback;
 }
 
-vec3 JsonReader::Vec3(const char* key, Range range) const {
+vec3 JsonReader::Vec3(const char* key, const Range& range) const {
   const nlohmann::json& v = Field(key);
   const std::string expected = "an array of 3 numbers " + range.Describe();
   if (!v.is_array() || v.size() != 3) Fail(key, expected, DescribeJson(v));
@@ -169,7 +169,7 @@ std::string JsonReader::String(const char* key, std::initializer_list<const char
   const nlohmann::json& v = Field(key);
   const std::string expected = "one of " + JoinQuoted(allowed);
   if (!v.is_string()) Fail(key, expected, DescribeJson(v));
-  const auto s = v.get<std::string>();
+  auto s = v.get<std::string>();
   for (const char* a : allowed) {
     if (s == a) return s;
   }
@@ -203,8 +203,8 @@ void JsonReader::RejectUnknownKeys(std::initializer_list<const char*> known) con
       }
     }
     if (ok) continue;
-    std::string message = file_ + ": " + PathOf(item.key().c_str()) + ": unknown field \"" +
-                          item.key() + "\"";
+    std::string message =
+        file_ + ": " + PathOf(item.key().c_str()) + ": unknown field \"" + item.key() + "\"";
     if (!best.empty() && bestDistance <= std::max<std::size_t>(2, item.key().size() / 3)) {
       message += " (did you mean \"" + best + "\"?)";
     } else {

@@ -10,7 +10,8 @@ namespace glint {
 
 namespace {
 const Light& RequireLight(const Scene& scene) {
-  if (!scene.light) throw std::invalid_argument("Monte Carlo mode needs an area_light in the scene");
+  if (!scene.light)
+    throw std::invalid_argument("Monte Carlo mode needs an area_light in the scene");
   return *scene.light;
 }
 }  // namespace
@@ -53,8 +54,8 @@ Colour MonteCarloIntegrator::DirectLight(const Hit& hit, vec3 d, vec3 n, double 
   const LightSample ls = light_.SampleLi(hit.point, u, v);
   const double cosTheta = glm::dot(n, ls.wi);
   if (ls.pdf == 0.0 || cosTheta <= 0.0) return Colour(0.0);
-  const Colour f = m.type == MaterialType::Lambertian ? m.reflectance * kInvPi
-                                                      : PhongBrdf(m, d, n, ls.wi);
+  const Colour f =
+      m.type == MaterialType::Lambertian ? m.reflectance * kInvPi : PhongBrdf(m, d, n, ls.wi);
   if (f == Colour(0.0)) return Colour(0.0);
   ++stats.shadowRays;
   if (scene_.Occluded(OffsetRayOrigin(hit.point, n, ls.wi), ls.point)) return Colour(0.0);
@@ -165,7 +166,8 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, doubl
     }
     candidates[kept++] = c;
   }
-  const std::uint32_t first = kept > 0 ? tree.AddChildren(index, static_cast<std::uint32_t>(kept)) : 0;
+  const std::uint32_t first =
+      kept > 0 ? tree.AddChildren(index, static_cast<std::uint32_t>(kept)) : 0;
   for (int i = 0; i < kept; ++i) {
     const Candidate& c = candidates[i];
     Ray& child = tree[first + static_cast<std::uint32_t>(i)];
@@ -178,9 +180,15 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, doubl
     child.inside = c.inside;
     child.depth = static_cast<std::uint8_t>(ray.depth + 1);
     switch (c.kind) {
-      case RayKind::Refracted: ++stats.refractedRays; break;
-      case RayKind::Diffuse: ++stats.diffuseRays; break;
-      default: ++stats.reflectedRays; break;
+      case RayKind::Refracted:
+        ++stats.refractedRays;
+        break;
+      case RayKind::Diffuse:
+        ++stats.diffuseRays;
+        break;
+      default:
+        ++stats.reflectedRays;
+        break;
     }
   }
   for (int i = 0; i < kept; ++i) {

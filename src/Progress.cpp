@@ -6,7 +6,9 @@
 
 namespace glint {
 
-bool StderrIsTerminal() { return isatty(STDERR_FILENO) != 0; }
+bool StderrIsTerminal() {
+  return isatty(STDERR_FILENO) != 0;
+}
 
 ProgressBar::ProgressBar(bool enabled)
     : enabled_(enabled), start_(std::chrono::steady_clock::now()), last_(start_) {}

@@ -41,8 +41,9 @@ Material ReadObjectMaterial(const JsonReader& o) {
   m.whittedDiffuse = o.NumberOr("whitted_diffuse", 0.0, Range::Closed(0.0, 1.0));
   m.whittedSpecular = o.NumberOr("whitted_specular", 0.0, Range::Closed(0.0, 1.0));
   if (m.whittedDiffuse + m.whittedSpecular > 1.0) {
-    o.Fail("whitted_specular", "whitted_diffuse + whitted_specular <= 1 (the weights of a "
-                               "node sum to 1)",
+    o.Fail("whitted_specular",
+           "whitted_diffuse + whitted_specular <= 1 (the weights of a "
+           "node sum to 1)",
            std::to_string(m.whittedDiffuse + m.whittedSpecular));
   }
   return m;
@@ -63,18 +64,17 @@ void ReadRoom(const JsonReader& root, Scene& scene) {
     materials[static_cast<std::size_t>(i)].reflectance =
         w.Vec3("reflectance", Range::Closed(0.0, 1.0));
     materials[static_cast<std::size_t>(i)].whittedDiffuse = 1.0;  // rho / pi * E
-    scene.objectNames.push_back(w.Has("id") ? w.Text("id")
-                                            : "W" + std::to_string(i + 1));
+    scene.objectNames.push_back(w.Has("id") ? w.Text("id") : "W" + std::to_string(i + 1));
   }
   scene.wall = Wall(position, size, materials, 0);
 }
 
-void RequireInsideRoom(const Scene& scene, const JsonReader& r, const char* key, vec3 lo,
-                       vec3 hi) {
+void RequireInsideRoom(const Scene& scene, const JsonReader& r, const char* key, vec3 lo, vec3 hi) {
   const double eps = 1e-9 * (1.0 + scene.wall.Size());
   if (!scene.wall.Contains(lo, eps) || !scene.wall.Contains(hi, eps)) {
-    r.Fail(key, "an object inside the room [" + std::to_string(scene.wall.Position().x) + ", " +
-                    std::to_string(scene.wall.Position().x + scene.wall.Size()) + "]^3",
+    r.Fail(key,
+           "an object inside the room [" + std::to_string(scene.wall.Position().x) + ", " +
+               std::to_string(scene.wall.Position().x + scene.wall.Size()) + "]^3",
            "one that reaches outside it");
   }
 }
@@ -85,15 +85,15 @@ void ReadObjects(const JsonReader& root, Scene& scene) {
     const int id = static_cast<int>(scene.objectNames.size());
     scene.objectNames.push_back(o.Has("id") ? o.Text("id") : "O" + std::to_string(id - 4));
     if (type == "sphere") {
-      o.RejectUnknownKeys({"id", "type", "center", "radius", "material", "reflectance",
-                           "exponent", "ior", "whitted_diffuse", "whitted_specular"});
+      o.RejectUnknownKeys({"id", "type", "center", "radius", "material", "reflectance", "exponent",
+                           "ior", "whitted_diffuse", "whitted_specular"});
       const vec3 centre = o.Vec3("center", Range::Any());
       const double radius = o.Number("radius", Range::Positive());
       RequireInsideRoom(scene, o, "center", centre - vec3(radius), centre + vec3(radius));
       scene.spheres.emplace_back(centre, radius, ReadObjectMaterial(o), id);
     } else {
-      o.RejectUnknownKeys({"id", "type", "position", "size", "material", "reflectance",
-                           "exponent", "ior", "whitted_diffuse", "whitted_specular"});
+      o.RejectUnknownKeys({"id", "type", "position", "size", "material", "reflectance", "exponent",
+                           "ior", "whitted_diffuse", "whitted_specular"});
       const vec3 position = o.Vec3("position", Range::Any());
       const double size = o.Number("size", Range::Positive());
       RequireInsideRoom(scene, o, "position", position, position + vec3(size));
@@ -119,8 +119,8 @@ void ReadLights(const JsonReader& root, Scene& scene) {
     // Edges x then z: normalize(x cross z) = -y, emitting downward into the room.
     const int id = static_cast<int>(scene.objectNames.size());
     scene.objectNames.emplace_back("L");
-    scene.light.emplace(Rectangle(corner, vec3(side, 0.0, 0.0), vec3(0.0, 0.0, side)),
-                        radiance, id);
+    scene.light.emplace(Rectangle(corner, vec3(side, 0.0, 0.0), vec3(0.0, 0.0, side)), radiance,
+                        id);
   }
   for (const JsonReader& p : root.Objects("point_lights", 0, 16)) {
     p.RejectUnknownKeys({"id", "position", "intensity"});
@@ -170,7 +170,8 @@ void ApplyOverride(nlohmann::json& document, const std::string& assignment,
                    const std::string& file) {
   const std::size_t eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0 || assignment[0] != '/') {
-    throw InputError(file + ": --set " + assignment + ": expected POINTER=VALUE with a JSON pointer, "
+    throw InputError(file + ": --set " + assignment +
+                     ": expected POINTER=VALUE with a JSON pointer, "
                      "for example --set /objects/1/ior=1.3");
   }
   const std::string pointer = assignment.substr(0, eq);
@@ -206,15 +207,14 @@ void ApplyOverride(nlohmann::json& document, const std::string& assignment,
     }
     document[ptr] = value;
   } catch (const nlohmann::json::exception& e) {
-    throw InputError(file + ": --set " + pointer + ": not a valid JSON pointer (" + e.what() +
-                     ")");
+    throw InputError(file + ": --set " + pointer + ": not a valid JSON pointer (" + e.what() + ")");
   }
 }
 
 Scene SceneFromJson(const nlohmann::json& document, const std::string& file) {
   const JsonReader root(document, file, "");
-  root.RejectUnknownKeys({"description", "room", "objects", "area_light", "point_lights",
-                          "camera", "whitted", "mc"});
+  root.RejectUnknownKeys(
+      {"description", "room", "objects", "area_light", "point_lights", "camera", "whitted", "mc"});
   Scene scene;
   ReadRoom(root, scene);
   ReadObjects(root, scene);
@@ -239,11 +239,9 @@ Scene SceneFromJson(const nlohmann::json& document, const std::string& file) {
   }
   const nlohmann::json& res = document.at("camera").at("resolution");
   if (!res.is_array() || res.size() != 2 || !res[0].is_number_integer() ||
-      !res[1].is_number_integer() || res[0].get<long long>() < 1 ||
-      res[1].get<long long>() < 1 || res[0].get<long long>() > 65536 ||
-      res[1].get<long long>() > 65536) {
-    camera.Fail("resolution", "[width, height], whole numbers in [1, 65536]",
-                DescribeJson(res));
+      !res[1].is_number_integer() || res[0].get<long long>() < 1 || res[1].get<long long>() < 1 ||
+      res[0].get<long long>() > 65536 || res[1].get<long long>() > 65536) {
+    camera.Fail("resolution", "[width, height], whole numbers in [1, 65536]", DescribeJson(res));
   }
   scene.camera.width = res[0].get<int>();
   scene.camera.height = res[1].get<int>();

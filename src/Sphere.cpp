@@ -2,7 +2,7 @@
 
 namespace glint {
 
-Sphere::Sphere(vec3 centre, double radius, Material material, int object)
+Sphere::Sphere(vec3 centre, double radius, const Material& material, int object)
     : centre_(centre), radius_(radius), material_(material), object_(object) {}
 
 bool Sphere::Roots(vec3 origin, vec3 direction, double& t0, double& t1) const {

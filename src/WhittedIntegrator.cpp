@@ -38,8 +38,8 @@ Colour WhittedIntegrator::LocalLight(const Hit& hit, vec3 d, RenderStats& stats)
   return sum;
 }
 
-std::uint32_t WhittedIntegrator::SpawnChildren(RayTree& tree, std::uint32_t index,
-                                               const Hit& hit, RenderStats& stats) const {
+std::uint32_t WhittedIntegrator::SpawnChildren(RayTree& tree, std::uint32_t index, const Hit& hit,
+                                               RenderStats& stats) const {
   const Ray parent = tree[index];
   const Material& m = *hit.material;
   const double w = m.WhittedChildWeight();
@@ -88,8 +88,7 @@ std::uint32_t WhittedIntegrator::SpawnChildren(RayTree& tree, std::uint32_t inde
   return count;
 }
 
-Colour WhittedIntegrator::TraceNode(RayTree& tree, std::uint32_t index,
-                                    RenderStats& stats) const {
+Colour WhittedIntegrator::TraceNode(RayTree& tree, std::uint32_t index, RenderStats& stats) const {
   const vec3 origin = tree[index].start;
   const vec3 d = tree[index].direction;
   Hit hit;

@@ -1,3 +1,5 @@
 #include "Cli.hpp"
 
-int main(int argc, char** argv) { return glint::RunCli(argc, argv); }
+int main(int argc, char** argv) {
+  return glint::RunCli(argc, argv);
+}

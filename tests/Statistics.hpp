@@ -147,7 +147,8 @@ struct DirectionalChiSquare {
     const Frame f = Frame::FromZ(glm::normalize(axis));
     std::vector<double> observed(static_cast<std::size_t>(Cells()), 0.0);
     Pcg32 rng(seed, 7);
-    for (int k = 0; k < samples; ++k) observed[static_cast<std::size_t>(CellOf(f, sample(rng)))] += 1.0;
+    for (int k = 0; k < samples; ++k)
+      observed[static_cast<std::size_t>(CellOf(f, sample(rng)))] += 1.0;
     std::vector<double> expected(observed.size(), 0.0);
     const double band = (1.0 - cosMin) / nCos;
     for (int i = 0; i < nCos; ++i) {

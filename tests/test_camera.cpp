@@ -2,6 +2,7 @@
 
 #include "TestScenes.hpp"
 #include "glint/Camera.hpp"
+#include "glint/MonteCarloIntegrator.hpp"
 #include "glint/WhittedIntegrator.hpp"
 
 namespace glint {
@@ -83,6 +84,30 @@ TEST(Camera, SameSeedSameImageForAnyThreadCount) {
   const Image c = other.ToImage();
   for (std::size_t i = 0; i < a.Pixels().size(); ++i) differing += a.Pixels()[i] != c.Pixels()[i];
   EXPECT_GT(differing, 100);
+}
+
+TEST(Camera, MonteCarloImageDoesNotDependOnTheThreadCount) {
+  const Scene scene = testing::CanonicalScene();
+  MonteCarloOptions o;
+  o.walls = MonteCarloOptions::Walls::Diffuse;
+  o.branches = 2;
+  const MonteCarloIntegrator integrator(scene, o);
+  RenderOptions options;
+  options.raysPerPixel = 8;
+  options.seed = 7;
+  Camera one(scene.wall, scene.camera.eye, 33, 17);
+  Camera two(scene.wall, scene.camera.eye, 33, 17);
+  options.threads = 1;
+  const RenderStats s1 = one.Render(integrator, options);
+  options.threads = 2;
+  const RenderStats s2 = two.Render(integrator, options);
+  const Image a = one.ToImage();
+  const Image b = two.ToImage();
+  for (std::size_t i = 0; i < a.Pixels().size(); ++i) {
+    ASSERT_EQ(a.Pixels()[i], b.Pixels()[i]) << "pixel " << i;
+  }
+  EXPECT_EQ(s1.TotalRays(), s2.TotalRays());
+  EXPECT_EQ(s1.shadowRays, s2.shadowRays);
 }
 
 }  // namespace

@@ -33,9 +33,9 @@ TEST(Fresnel, SnellsLawBothWays) {
       const double sinI = std::sin(deg * kPi / 180.0);
       const double sinT = std::sqrt(t->x * t->x + t->y * t->y);
       EXPECT_NEAR(n1 * sinI, n2 * sinT, 1e-14) << deg;
-      EXPECT_NEAR(t->y, 0.0, 1e-15);                  // in the plane of incidence
-      EXPECT_GE(t->x * d.x, 0.0);                     // on the far side of the normal
-      EXPECT_GT(t->z * d.z, 0.0);  // keeps travelling through
+      EXPECT_NEAR(t->y, 0.0, 1e-15);  // in the plane of incidence
+      EXPECT_GE(t->x * d.x, 0.0);     // on the far side of the normal
+      EXPECT_GT(t->z * d.z, 0.0);     // keeps travelling through
     }
   }
 }

@@ -27,7 +27,7 @@ fs::path FreshDir(const std::string& name) {
 
 TEST(ImageIO, PfmRoundTripAndBottomRowFirst) {
   Image image(3, 2);
-  image.At(0, 0) = Colour(1.0, 0.0, 0.0);  // top left
+  image.At(0, 0) = Colour(1.0, 0.0, 0.0);   // top left
   image.At(0, 1) = Colour(0.0, 0.25, 0.0);  // bottom left
   image.At(2, 1) = Colour(0.5, 1e-3, 7.0);
   const std::string path = (FreshDir("pfm") / "a.pfm").string();

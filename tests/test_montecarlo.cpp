@@ -2,6 +2,8 @@
 // and agreement of independent estimators within their error bars.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "Statistics.hpp"
 #include "TestScenes.hpp"
 #include "glint/Camera.hpp"
@@ -57,20 +59,26 @@ TEST(MonteCarlo, UnoccludedWallRadianceMatchesLambertsFormula) {
     int channel;
   };
   const Case cases[] = {
-      {vec3(0.3, 0.0, 0.6), vec3(0, 1, 0), vec3(0.3, 0.5, 0.6), 0.75, 0},   // floor
-      {vec3(0.7, 0.3, 0.0), vec3(0, 0, 1), vec3(0.7, 0.3, 0.5), 0.75, 1},   // back wall
-      {vec3(0.0, 0.8, 0.5), vec3(1, 0, 0), vec3(0.5, 0.8, 0.5), 0.75, 0},   // left wall, red
+      {vec3(0.3, 0.0, 0.6), vec3(0, 1, 0), vec3(0.3, 0.5, 0.6), 0.75, 0},    // floor
+      {vec3(0.7, 0.3, 0.0), vec3(0, 0, 1), vec3(0.7, 0.3, 0.5), 0.75, 1},    // back wall
+      {vec3(0.0, 0.8, 0.5), vec3(1, 0, 0), vec3(0.5, 0.8, 0.5), 0.75, 0},    // left wall, red
       {vec3(1.0, 0.95, 0.2), vec3(-1, 0, 0), vec3(0.5, 0.95, 0.2), 0.75, 1}  // right, grazing
   };
   std::uint64_t seed = 1;
   for (const Case& c : cases) {
-    const double expected = c.rho * kInvPi * 50.0 * PolygonCosineIntegral(c.point, c.normal, corners);
+    const double expected =
+        c.rho * kInvPi * 50.0 * PolygonCosineIntegral(c.point, c.normal, corners);
     const MeanAndError m =
         EstimateRadiance(integrator, c.viewFrom, c.point - c.viewFrom, 200000, c.channel, seed++);
     // The test can see a 1% bias: three standard errors are well below 1%.
     ASSERT_LT(3.0 * m.StandardError(), 0.01 * expected);
     EXPECT_NEAR(m.mean, expected, 3.0 * m.StandardError())
         << "at (" << c.point.x << ", " << c.point.y << ", " << c.point.z << ")";
+    std::printf(
+        "wall point (%.2f, %.2f, %.2f): Monte Carlo %.6f +- %.6f, Lambert %.6f, "
+        "deviation %+.2f standard errors (%+.4f%%)\n",
+        c.point.x, c.point.y, c.point.z, m.mean, m.StandardError(), expected,
+        (m.mean - expected) / m.StandardError(), 100.0 * (m.mean / expected - 1.0));
   }
 }
 
@@ -87,8 +95,8 @@ double PhongAlbedoByQuadrature(const Material& m, vec3 d, vec3 n) {
     const double dAlpha = kPi * s / kS;
     for (int j = 0; j < kPhi; ++j) {
       const double phi = 2.0 * kPi * (j + 0.5) / kPhi;
-      const vec3 psi = f.ToWorld(vec3(std::sin(alpha) * std::cos(phi),
-                                      std::sin(alpha) * std::sin(phi), std::cos(alpha)));
+      const vec3 psi = f.ToWorld(
+          vec3(std::sin(alpha) * std::cos(phi), std::sin(alpha) * std::sin(phi), std::cos(alpha)));
       const double cosTheta = glm::dot(n, psi);
       if (cosTheta > 0.0) sum += PhongBrdf(m, d, n, psi).x * cosTheta * std::sin(alpha) * dAlpha;
     }
@@ -109,8 +117,10 @@ TEST(MonteCarlo, PhongAlbedoAgreesWithQuadratureAndNeverExceedsRho) {
       const vec3 d(std::sin(th), 0.0, -std::cos(th));
       const double quadrature = PhongAlbedoByQuadrature(m, d, n);
       MeanAndError mc;
-      for (int i = 0; i < 200000; ++i) mc.Add(SamplePhong(m, d, n, rng.Uniform(), rng.Uniform()).weight.x);
-      const std::string what = "n = " + std::to_string(exponent) + ", " + std::to_string(incidence) + " deg";
+      for (int i = 0; i < 200000; ++i)
+        mc.Add(SamplePhong(m, d, n, rng.Uniform(), rng.Uniform()).weight.x);
+      const std::string what =
+          "n = " + std::to_string(exponent) + ", " + std::to_string(incidence) + " deg";
       EXPECT_LE(quadrature, 0.8 * (1.0 + 1e-4)) << what;
       EXPECT_LE(mc.mean, 0.8 + 3.0 * mc.StandardError()) << what;
       EXPECT_NEAR(mc.mean, quadrature, 4.0 * mc.StandardError() + 1e-4 * quadrature) << what;
@@ -161,10 +171,12 @@ BlockEstimates RenderBlocks(const Scene& scene, MonteCarloOptions options, int s
       for (int bx = 0; bx < nb; ++bx) {
         Colour sum(0.0);
         for (int y = by * block; y < (by + 1) * block; ++y) {
-          for (int x = bx * block; x < (bx + 1) * block; ++x) sum += camera.PixelAt(x, y).Radiance();
+          for (int x = bx * block; x < (bx + 1) * block; ++x)
+            sum += camera.PixelAt(x, y).Radiance();
         }
         for (int k = 0; k < 3; ++k) {
-          out.blocks[static_cast<std::size_t>((by * nb + bx) * 3 + k)].Add(sum[k] / (block * block));
+          out.blocks[static_cast<std::size_t>((by * nb + bx) * 3 + k)].Add(sum[k] /
+                                                                           (block * block));
         }
       }
     }
@@ -194,8 +206,8 @@ TEST(MonteCarlo, LightBrdfAndMisSamplingAgreeBlockByBlock) {
     for (std::size_t i = 0; i < mis.blocks.size(); ++i) {
       const MeanAndError& a = mis.blocks[i];
       const MeanAndError& b = other->blocks[i];
-      const double se = std::sqrt(a.StandardError() * a.StandardError() +
-                                  b.StandardError() * b.StandardError());
+      const double se =
+          std::sqrt(a.StandardError() * a.StandardError() + b.StandardError() * b.StandardError());
       EXPECT_LE(std::abs(a.mean - b.mean), zMax * se + 1e-12)
           << name << " block " << i / 3 << " channel " << i % 3 << ": " << a.mean << " vs "
           << b.mean;
@@ -234,7 +246,8 @@ TEST(MonteCarlo, NoNonFiniteSamplesInAnyMode) {
         ro.raysPerPixel = 4;
         const RenderStats stats = camera.Render(integrator, ro);
         EXPECT_EQ(stats.nonFiniteSamples, 0u);
-        for (const Colour& c : camera.ToImage().Pixels()) ASSERT_TRUE(IsFinite(c));
+        const Image image = camera.ToImage();
+        for (const Colour& c : image.Pixels()) ASSERT_TRUE(IsFinite(c));
       }
     }
   }

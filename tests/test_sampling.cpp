@@ -44,8 +44,8 @@ TEST(Sampling, PhongLobeMatchesItsPdf) {
       const ChiSquareResult r = test.Run(
           [&](Pcg32& rng) { return SamplePhong(m, d, n, rng.Uniform(), rng.Uniform()).direction; },
           [&](vec3 psi) { return PhongPdf(m, d, n, psi); }, 500000, 1);
-      ExpectFits(r, alpha, "n = " + std::to_string(exponent) + ", incidence " +
-                               std::to_string(incidence));
+      ExpectFits(r, alpha,
+                 "n = " + std::to_string(exponent) + ", incidence " + std::to_string(incidence));
     }
   }
 }
@@ -95,16 +95,17 @@ TEST(Sampling, LightSamplingMatchesItsSolidAnglePdf) {
     test.nCos = 16;
     test.nPhi = 24;
     test.sub = 48;  // the density jumps at the light's edges: integrate finely
-    const ChiSquareResult r = test.Run(
-        [&](Pcg32& rng) { return light.SampleLi(p, rng.Uniform(), rng.Uniform()).wi; },
-        [&](vec3 w) {
-          double t = 0.0;
-          if (!light.Shape().Intersect(p, w, kInfinity, t)) return 0.0;
-          return light.PdfLi(p, p + t * w);
-        },
-        200000, 3);
-    ExpectFits(r, alpha, "light from (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
-                             ", " + std::to_string(p.z) + ")");
+    const ChiSquareResult r =
+        test.Run([&](Pcg32& rng) { return light.SampleLi(p, rng.Uniform(), rng.Uniform()).wi; },
+                 [&](vec3 w) {
+                   double t = 0.0;
+                   if (!light.Shape().Intersect(p, w, kInfinity, t)) return 0.0;
+                   return light.PdfLi(p, p + t * w);
+                 },
+                 200000, 3);
+    ExpectFits(r, alpha,
+               "light from (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " +
+                   std::to_string(p.z) + ")");
   }
 }
 

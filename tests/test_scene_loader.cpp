@@ -57,8 +57,8 @@ TEST(SceneLoader, CanonicalSceneHasTheSpecsNumbers) {
 }
 
 TEST(SceneLoader, OverridesByJsonPointer) {
-  const Scene s = CanonicalScene({"/objects/1/ior=1.3", "/camera/resolution=[64, 32]",
-                                  "/objects/0/material=mirror"});
+  const Scene s = CanonicalScene(
+      {"/objects/1/ior=1.3", "/camera/resolution=[64, 32]", "/objects/0/material=mirror"});
   EXPECT_EQ(s.spheres[1].GetMaterial().ior, 1.3);
   EXPECT_EQ(s.camera.width, 64);
   EXPECT_EQ(s.camera.height, 32);
@@ -76,19 +76,24 @@ void ExpectError(const std::vector<std::string>& overrides, const std::string& f
 }
 
 TEST(SceneLoader, ErrorsNameTheFileTheFieldTheExpectationAndTheValue) {
-  ExpectError({"/objects/0/radius=0"}, "/objects/0/radius: expected a number > 0, found the number 0");
+  ExpectError({"/objects/0/radius=0"},
+              "/objects/0/radius: expected a number > 0, found the number 0");
   ExpectError({"/objects/2/size=-1"}, "/objects/2/size: expected a number > 0");
-  ExpectError({"/objects/1/ior=\"glass\""}, "/objects/1/ior: expected a number >= 1, found the string \"glass\"");
-  ExpectError({"/objects/0/type=cylinder"}, "/objects/0/type: expected one of \"sphere\" or \"cube\"");
-  ExpectError({"/objects/0/reflectance=[0.5, 0.5]"}, "/objects/0/reflectance: expected an array of 3 numbers");
+  ExpectError({"/objects/1/ior=\"glass\""},
+              "/objects/1/ior: expected a number >= 1, found the string \"glass\"");
+  ExpectError({"/objects/0/type=cylinder"},
+              "/objects/0/type: expected one of \"sphere\" or \"cube\"");
+  ExpectError({"/objects/0/reflectance=[0.5, 0.5]"},
+              "/objects/0/reflectance: expected an array of 3 numbers");
   ExpectError({"/objects/0/exponent=-3"}, "/objects/0/exponent: expected a number >= 0");
   ExpectError({"/camera/eye=[0.4, 0.5, 2.5]"}, "/camera/eye: expected a point on the axis");
   ExpectError({"/camera/resolution=[0, 10]"}, "/camera/resolution: expected [width, height]");
-  ExpectError({"/area_light/center=[0.5, 0.9, 0.5]"}, "/area_light/center: expected a point in the ceiling plane");
-  ExpectError({"/point_lights/0/position=[0.5, 1.5, 0.5]"}, "/point_lights/0/position: expected an object inside the room");
+  ExpectError({"/area_light/center=[0.5, 0.9, 0.5]"},
+              "/area_light/center: expected a point in the ceiling plane");
+  ExpectError({"/point_lights/0/position=[0.5, 1.5, 0.5]"},
+              "/point_lights/0/position: expected an object inside the room");
   ExpectError({"/room/walls/1/side=floor"}, "/room/walls/1/side: expected one of \"ceiling\"");
-  ExpectError({"/objects/0/whitted_diffuse=0.6", "/objects/0/whitted_specular=0.6"},
-              "sum to 1");
+  ExpectError({"/objects/0/whitted_diffuse=0.6", "/objects/0/whitted_specular=0.6"}, "sum to 1");
   ExpectError({"/whitted/spp=0"}, "/whitted/spp: expected a whole number in [1, 1048576]");
   ExpectError({"/objects/0/colour=[1,1,1]"}, "unknown field \"colour\"");
 }

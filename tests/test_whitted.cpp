@@ -65,9 +65,9 @@ TEST(Whitted, BothLightsAddOnAWall) {
 // nearby: dark behind an opaque object, lit behind glass.
 Colour FloorBehind(const std::string& objects, vec3 light, vec3 centre) {
   const Scene scene = CanonicalScene(
-      {"/objects=" + objects, R"(/point_lights=[{"position": [)" + std::to_string(light.x) +
-                                  "," + std::to_string(light.y) + "," +
-                                  std::to_string(light.z) + R"(], "intensity": [1, 1, 1]}])"});
+      {"/objects=" + objects, R"(/point_lights=[{"position": [)" + std::to_string(light.x) + "," +
+                                  std::to_string(light.y) + "," + std::to_string(light.z) +
+                                  R"(], "intensity": [1, 1, 1]}])"});
   const vec3 d = glm::normalize(centre - light);
   const vec3 floor = light + (-light.y / d.y) * d;
   const vec3 eye = floor + vec3(0.0, 0.02, 0.05);
@@ -165,8 +165,8 @@ TEST(Whitted, GlassOfIndexOneIsInvisible) {
   // With no highlight and n = 1, a camera ray passes the sphere undeviated: its colour
   // equals that of the scene without the sphere.
   const Scene without = CanonicalScene({"/objects=[]"});
-  const Scene glassOnly = CanonicalScene(
-      {R"(/objects=[{"type": "sphere", "center": [0.74, 0.16, 0.70], "radius": 0.16,
+  const Scene glassOnly =
+      CanonicalScene({R"(/objects=[{"type": "sphere", "center": [0.74, 0.16, 0.70], "radius": 0.16,
            "material": "glass", "ior": 1.0}])"});
   const vec3 eye(0.5, 0.5, 2.5);
   for (int i = 0; i < 50; ++i) {
@@ -175,7 +175,7 @@ TEST(Whitted, GlassOfIndexOneIsInvisible) {
     Colour a, b;
     const RayTree tree = TraceOne(WhittedIntegrator(glassOnly, 10), eye, target - eye, &a);
     ASSERT_EQ(glassOnly.ObjectName(tree[0].object), "O1");  // the glass sphere, first here
-    ASSERT_EQ(tree[0].childCount, 1u);                       // F = 0: no reflected child
+    ASSERT_EQ(tree[0].childCount, 1u);                      // F = 0: no reflected child
     TraceOne(WhittedIntegrator(without, 10), eye, target - eye, &b);
     EXPECT_NEAR(a.x, b.x, 1e-6 * (1.0 + b.x)) << i;
     EXPECT_NEAR(a.y, b.y, 1e-6 * (1.0 + b.y)) << i;

@@ -12,7 +12,7 @@ namespace glint {
 
 class Cube {
  public:
-  Cube(vec3 position, double size, Material material, int object);
+  Cube(vec3 position, double size, const Material& material, int object);
 
   bool Intersect(vec3 origin, vec3 direction, double tMax, Hit& hit) const;
   bool IntersectAny(vec3 origin, vec3 direction, double tMax) const;

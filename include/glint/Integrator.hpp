@@ -20,8 +20,7 @@ class Integrator {
 
   // Traces tree[root] (start, direction, importance set) and fills in its colour and
   // its subtree. Returns the colour.
-  virtual Colour Trace(RayTree& tree, std::uint32_t root, Pcg32& rng,
-                       RenderStats& stats) const = 0;
+  virtual Colour Trace(RayTree& tree, std::uint32_t root, Pcg32& rng, RenderStats& stats) const = 0;
 };
 
 }  // namespace glint

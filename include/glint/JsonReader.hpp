@@ -42,13 +42,12 @@ class JsonReader {
   bool Has(const char* key) const { return value_.contains(key); }
   JsonReader Object(const char* key) const;
   // An array of objects with between minSize and maxSize elements.
-  std::vector<JsonReader> Objects(const char* key, std::size_t minSize,
-                                  std::size_t maxSize) const;
-  double Number(const char* key, Range range) const;
-  double NumberOr(const char* key, double fallback, Range range) const;
-  int Integer(const char* key, Range range) const;
-  int IntegerOr(const char* key, int fallback, Range range) const;
-  vec3 Vec3(const char* key, Range range) const;
+  std::vector<JsonReader> Objects(const char* key, std::size_t minSize, std::size_t maxSize) const;
+  double Number(const char* key, const Range& range) const;
+  double NumberOr(const char* key, double fallback, const Range& range) const;
+  int Integer(const char* key, const Range& range) const;
+  int IntegerOr(const char* key, int fallback, const Range& range) const;
+  vec3 Vec3(const char* key, const Range& range) const;
   std::string String(const char* key, std::initializer_list<const char*> allowed) const;
   std::string Text(const char* key) const;  // any non-empty string
   std::string StringOr(const char* key, const char* fallback,

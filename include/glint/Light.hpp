@@ -9,11 +9,11 @@ namespace glint {
 
 // A point on the light chosen for a shading point p, as seen from p.
 struct LightSample {
-  vec3 point;     // y on the light
-  vec3 wi;        // unit direction from p to y
+  vec3 point;  // y on the light
+  vec3 wi;     // unit direction from p to y
   double distance;
-  double pdf;     // solid-angle density of wi: |p - y|^2 / (cos(theta_y) A); 0 if unusable
-  Colour Le;      // radiance leaving y toward p
+  double pdf;  // solid-angle density of wi: |p - y|^2 / (cos(theta_y) A); 0 if unusable
+  Colour Le;   // radiance leaving y toward p
 };
 
 class Light {

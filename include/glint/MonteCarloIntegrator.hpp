@@ -30,8 +30,7 @@ class MonteCarloIntegrator final : public Integrator {
   // Throws std::invalid_argument if the scene has no area light.
   MonteCarloIntegrator(const Scene& scene, MonteCarloOptions options);
 
-  Colour Trace(RayTree& tree, std::uint32_t root, Pcg32& rng,
-               RenderStats& stats) const override;
+  Colour Trace(RayTree& tree, std::uint32_t root, Pcg32& rng, RenderStats& stats) const override;
 
   // Direct light at a surface point from one random point on the light:
   // Le f cos(theta) / p(w), with f the BRDF for the incident direction d.

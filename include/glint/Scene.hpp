@@ -23,9 +23,9 @@ struct CameraSettings {
 };
 
 struct ModeSettings {
-  int spp = 1;             // rays per pixel
-  int maxDepth = 10;       // ray iterations (Whitted)
-  double exposure = 1.0;   // display mapping: radiance times exposure
+  int spp = 1;            // rays per pixel
+  int maxDepth = 10;      // ray iterations (Whitted)
+  double exposure = 1.0;  // display mapping: radiance times exposure
 };
 
 class Scene {

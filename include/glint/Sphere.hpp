@@ -9,7 +9,7 @@ namespace glint {
 
 class Sphere {
  public:
-  Sphere(vec3 centre, double radius, Material material, int object);
+  Sphere(vec3 centre, double radius, const Material& material, int object);
 
   // Closest hit with t in (0, tMax), from outside or inside. The hit point is projected
   // back onto the surface, so round-off cannot leave it inside or outside the sphere.

@@ -13,8 +13,7 @@ class WhittedIntegrator final : public Integrator {
  public:
   WhittedIntegrator(const Scene& scene, int maxDepth);
 
-  Colour Trace(RayTree& tree, std::uint32_t root, Pcg32& rng,
-               RenderStats& stats) const override;
+  Colour Trace(RayTree& tree, std::uint32_t root, Pcg32& rng, RenderStats& stats) const override;
 
   // The local term at a hit seen along direction d: for every visible point light of
   // intensity I at distance r and angle theta, with E = I cos(theta) / r^2,

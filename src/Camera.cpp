@@ -49,21 +49,29 @@ vec3 Camera::DirectionThrough(double px, double py) const {
 
 RenderStats Camera::Render(const Integrator& integrator, const RenderOptions& options) {
   const int count = width_ * height_;
+  constexpr int kChunk = 64;
+  const int chunks = (count + kChunk - 1) / kChunk;
   std::atomic<std::size_t> done{0};
   RenderStats total;
 #pragma omp parallel num_threads(options.threads > 0 ? options.threads : omp_get_max_threads())
   {
     RayTree trees;  // this thread's arena, reused for every pixel it renders
     RenderStats stats;
-#pragma omp for schedule(dynamic, 16) nowait
-    for (int i = 0; i < count; ++i) {
-      const int x = i % width_;
-      const int y = i / width_;
-      Pcg32 rng = Pcg32::ForPixel(options.seed, static_cast<std::uint64_t>(i));
-      pixels_[static_cast<std::size_t>(i)].Render(*this, x, y, options.raysPerPixel, integrator,
-                                                  rng, trees, stats);
-      const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
-      if (options.progress && omp_get_thread_num() == 0 && finished % 256 == 0) {
+    // Chunks of consecutive pixels, handed out dynamically: the progress counter and
+    // the cancel flag are touched once a chunk, not once a pixel.
+#pragma omp for schedule(dynamic, 1) nowait
+    for (int chunk = 0; chunk < chunks; ++chunk) {
+      if (options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed)) continue;
+      const int end = std::min(count, (chunk + 1) * kChunk);
+      for (int i = chunk * kChunk; i < end; ++i) {
+        Pcg32 rng = Pcg32::ForPixel(options.seed, static_cast<std::uint64_t>(i), options.pass);
+        pixels_[static_cast<std::size_t>(i)].Render(*this, i % width_, i / width_,
+                                                    options.raysPerPixel, integrator, rng, trees,
+                                                    stats, false, options.cancel);
+      }
+      const std::size_t finished =
+          done.fetch_add(static_cast<std::size_t>(end - chunk * kChunk), std::memory_order_relaxed);
+      if (options.progress && omp_get_thread_num() == 0) {
         options.progress(finished, static_cast<std::size_t>(count));
       }
     }
@@ -73,6 +81,10 @@ RenderStats Camera::Render(const Integrator& integrator, const RenderOptions& op
   if (options.progress)
     options.progress(static_cast<std::size_t>(count), static_cast<std::size_t>(count));
   return total;
+}
+
+void Camera::Clear() {
+  for (Pixel& p : pixels_) p.Clear();
 }
 
 Image Camera::ToImage() const {

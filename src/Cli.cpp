@@ -5,12 +5,14 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "Interrupt.hpp"
 #include "Progress.hpp"
 #include "glint/Camera.hpp"
 #include "glint/ImageIO.hpp"
@@ -23,14 +25,16 @@ namespace glint {
 namespace {
 
 constexpr const char* kExitCodes =
-    "Exit codes: 0 success; 1 bad input (scene file, --set or option value); "
-    "2 an output file could not be written.";
+    "Exit codes: 0 success; 1 bad input (scene file, --set or option value); 2 an output "
+    "file could not be written; 130 and 143 stopped by SIGINT or SIGTERM (what was "
+    "rendered is saved to FILE.partial.EXT).";
 
 struct RenderArgs {
   std::string scene;
   std::string mode = "whitted";
   std::string size;
   int spp = 0;
+  double timeBudget = 0.0;
   int threads = 0;
   std::uint64_t seed = 1;
   double exposure = 0.0;
@@ -45,12 +49,30 @@ struct RenderArgs {
   int branches = 1;
 };
 
+// Everything a render needs, checked before any time is spent rendering.
+struct RenderSetup {
+  Scene scene;
+  ModeSettings mode;
+  int width = 0;
+  int height = 0;
+  int raysPerPass = 1;
+  int threads = 1;
+  double exposure = 1.0;
+  std::vector<std::string> outputs;
+};
+
+struct RenderResult {
+  RenderStats stats;
+  double seconds = 0.0;
+  std::uint32_t passes = 0;
+  bool interrupted = false;
+};
+
 // "N" or "WxH" into width and height.
 void ParseSize(const std::string& text, int& width, int& height) {
   const auto fail = [&]() {
     throw InputError("--size " + text + ": expected N or WxH with whole numbers in [1, 65536]");
   };
-  const std::size_t x = text.find_first_of("xX");
   const auto parse = [&](const std::string& s) {
     if (s.empty() || s.size() > 6 || s.find_first_not_of("0123456789") != std::string::npos) {
       fail();
@@ -59,6 +81,7 @@ void ParseSize(const std::string& text, int& width, int& height) {
     if (v < 1 || v > 65536) fail();
     return static_cast<int>(v);
   };
+  const std::size_t x = text.find_first_of("xX");
   if (x == std::string::npos) {
     width = height = parse(text);
   } else {
@@ -67,8 +90,25 @@ void ParseSize(const std::string& text, int& width, int& height) {
   }
 }
 
-// Refuses outputs whose format is unknown or whose folder cannot be written, before
-// any time is spent rendering.
+// Refuses an image whose buffers would not fit in this machine's memory.
+void CheckMemory(int width, int height, int threads) {
+  const double pixels = static_cast<double>(width) * static_cast<double>(height);
+  // The Pixel array, the linear image for output, the 8-bit display image and its
+  // encoding, and each thread's ray-tree arena.
+  const double bytes = pixels * (sizeof(Pixel) + sizeof(Colour) + 3.0 + 4.0) +
+                       threads * static_cast<double>(4096 * sizeof(Ray));
+  const double physical =
+      static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  if (physical > 0.0 && bytes > 0.8 * physical) {
+    char message[256];
+    std::snprintf(message, sizeof message,
+                  "--size %dx%d: the image needs about %.1f GiB of memory, more than this "
+                  "machine can give (%.1f GiB)",
+                  width, height, bytes / (1 << 30), physical / (1 << 30));
+    throw InputError(message);
+  }
+}
+
 void CheckWritable(const std::string& path) {
   const std::filesystem::path p(path);
   const std::filesystem::path dir = p.has_parent_path() ? p.parent_path() : ".";
@@ -83,39 +123,38 @@ void CheckWritable(const std::string& path) {
   }
 }
 
-void CheckOutputs(const std::vector<std::string>& outputs) {
-  for (const std::string& path : outputs) {
+// "dir/name.ext" -> "dir/name.partial.ext"
+std::string PartialPath(const std::string& path) {
+  std::filesystem::path p(path);
+  const std::string ext = p.extension().string();
+  p.replace_extension();
+  return p.string() + ".partial" + ext;
+}
+
+RenderSetup Prepare(const RenderArgs& args) {
+  RenderSetup s;
+  s.scene = LoadScene(args.scene, args.overrides);
+  for (const std::string& w : s.scene.warnings)
+    std::fprintf(stderr, "glint: warning: %s\n", w.c_str());
+  s.mode = args.mode == "mc" ? s.scene.mc : s.scene.whitted;
+  s.width = s.scene.camera.width;
+  s.height = s.scene.camera.height;
+  if (!args.size.empty()) ParseSize(args.size, s.width, s.height);
+  s.threads = args.threads > 0 ? args.threads : omp_get_max_threads();
+  CheckMemory(s.width, s.height, s.threads);
+  // With a time budget, --spp is the rays per pixel of each pass (default 1).
+  s.raysPerPass = args.spp > 0 ? args.spp : (args.timeBudget > 0.0 ? 1 : s.mode.spp);
+  s.exposure = args.exposure > 0.0 ? args.exposure : s.mode.exposure;
+  s.outputs = args.outputs;
+  if (s.outputs.empty()) {
+    s.outputs.push_back(std::filesystem::path(args.scene).stem().string() + ".png");
+  }
+  for (const std::string& path : s.outputs) {
     FormatFromPath(path);
     CheckWritable(path);
   }
-}
-
-std::string StatsJson(const RenderArgs& args, const Camera& camera, int spp, int threads,
-                      double seconds, const RenderStats& s) {
-  nlohmann::json j;
-  j["scene"] = args.scene;
-  j["mode"] = args.mode;
-  j["width"] = camera.Width();
-  j["height"] = camera.Height();
-  j["spp"] = spp;
-  j["threads"] = threads;
-  j["seed"] = args.seed;
-  j["seconds"] = seconds;
-  j["rays"] = {{"camera", s.cameraRays},       {"reflected", s.reflectedRays},
-               {"refracted", s.refractedRays}, {"diffuse", s.diffuseRays},
-               {"shadow", s.shadowRays},       {"total", s.TotalRays()}};
-  j["mrays_per_second"] = seconds > 0.0 ? static_cast<double>(s.TotalRays()) / seconds / 1e6 : 0.0;
-  j["camera_paths_per_second"] = seconds > 0.0 ? static_cast<double>(s.cameraRays) / seconds : 0.0;
-  j["nonfinite_samples"] = s.nonFiniteSamples;
-  if (args.mode == "mc") {
-    j["mc"] = {{"walls", args.walls},
-               {"glass", args.glass},
-               {"fresnel", args.fresnel},
-               {"strategy", args.strategy},
-               {"branches", args.branches}};
-  }
-  j["view_plane_distance"] = camera.ViewPlaneDistance();
-  return j.dump(2) + "\n";
+  if (!args.statsPath.empty()) CheckWritable(args.statsPath);
+  return s;
 }
 
 MonteCarloOptions McOptions(const RenderArgs& args, const ModeSettings& mode) {
@@ -132,81 +171,133 @@ MonteCarloOptions McOptions(const RenderArgs& args, const ModeSettings& mode) {
   return o;
 }
 
-int Render(const RenderArgs& args) {
-  const Scene scene = LoadScene(args.scene, args.overrides);
-  const bool mc = args.mode == "mc";
-  const ModeSettings& mode = mc ? scene.mc : scene.whitted;
-  int width = scene.camera.width;
-  int height = scene.camera.height;
-  if (!args.size.empty()) ParseSize(args.size, width, height);
-  const int spp = args.spp > 0 ? args.spp : mode.spp;
-  const double exposure = args.exposure > 0.0 ? args.exposure : mode.exposure;
-  std::vector<std::string> outputs = args.outputs;
-  if (outputs.empty()) {
-    outputs.push_back(std::filesystem::path(args.scene).stem().string() + ".png");
-  }
-  CheckOutputs(outputs);
-  if (!args.statsPath.empty()) CheckWritable(args.statsPath);
+std::unique_ptr<Integrator> MakeIntegrator(const RenderArgs& args, const RenderSetup& s) {
+  if (args.mode == "mc")
+    return std::make_unique<MonteCarloIntegrator>(s.scene, McOptions(args, s.mode));
+  return std::make_unique<WhittedIntegrator>(s.scene, s.mode.maxDepth);
+}
 
-  Camera camera(scene.wall, scene.camera.eye, width, height);
-  std::unique_ptr<Integrator> integrator;
-  if (mc) {
-    integrator = std::make_unique<MonteCarloIntegrator>(scene, McOptions(args, mode));
-  } else {
-    integrator = std::make_unique<WhittedIntegrator>(scene, mode.maxDepth);
-  }
+// One pass, or passes until the time budget would be overspent.
+RenderResult RunPasses(Camera& camera, const Integrator& integrator, const RenderArgs& args,
+                       const RenderSetup& s) {
+  const std::atomic<bool>& interrupted = InstallInterruptHandlers();
   ProgressBar bar(!args.quiet && StderrIsTerminal());
+  const auto start = std::chrono::steady_clock::now();
+  const auto elapsed = [&]() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  const bool progressive = args.timeBudget > 0.0;
+  RenderResult r;
   RenderOptions options;
-  options.raysPerPixel = spp;
+  options.raysPerPixel = s.raysPerPass;
   options.seed = args.seed;
   options.threads = args.threads;
-  options.progress = [&bar](std::size_t done, std::size_t total) { bar.Update(done, total); };
-  const int threads = args.threads > 0 ? args.threads : omp_get_max_threads();
-
-  const auto start = std::chrono::steady_clock::now();
-  const RenderStats stats = camera.Render(*integrator, options);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  options.cancel = &interrupted;
+  std::string label;
+  options.progress = [&](std::size_t done, std::size_t total) {
+    const double pass = static_cast<double>(done) / static_cast<double>(total);
+    bar.Update(progressive ? elapsed() / args.timeBudget : pass, label.c_str());
+  };
+  double lastPass = 0.0;
+  do {
+    options.pass = r.passes;
+    label = progressive ? "pass " + std::to_string(r.passes + 1) : "";
+    const double before = elapsed();
+    r.stats += camera.Render(integrator, options);
+    lastPass = elapsed() - before;
+    if (interrupted.load()) break;
+    ++r.passes;
+  } while (progressive && elapsed() + lastPass <= args.timeBudget);
+  r.seconds = elapsed();
+  r.interrupted = interrupted.load();
   bar.Finish();
+  return r;
+}
 
+std::string StatsJson(const RenderArgs& args, const RenderSetup& s, const Camera& camera,
+                      const RenderResult& r) {
+  const RenderStats& st = r.stats;
+  nlohmann::json j;
+  j["scene"] = args.scene;
+  j["mode"] = args.mode;
+  j["width"] = camera.Width();
+  j["height"] = camera.Height();
+  j["spp"] = static_cast<std::uint64_t>(r.passes) * static_cast<std::uint64_t>(s.raysPerPass);
+  j["passes"] = r.passes;
+  j["threads"] = s.threads;
+  j["seed"] = args.seed;
+  j["seconds"] = r.seconds;
+  if (args.timeBudget > 0.0) j["time_budget"] = args.timeBudget;
+  j["rays"] = {{"camera", st.cameraRays},       {"reflected", st.reflectedRays},
+               {"refracted", st.refractedRays}, {"diffuse", st.diffuseRays},
+               {"shadow", st.shadowRays},       {"total", st.TotalRays()}};
+  const double seconds = r.seconds > 0.0 ? r.seconds : 1e-9;
+  j["mrays_per_second"] = static_cast<double>(st.TotalRays()) / seconds / 1e6;
+  j["camera_paths_per_second"] = static_cast<double>(st.cameraRays) / seconds;
+  j["nonfinite_samples"] = st.nonFiniteSamples;
+  j["interrupted"] = r.interrupted;
+  if (args.mode == "mc") {
+    j["mc"] = {{"walls", args.walls},
+               {"glass", args.glass},
+               {"fresnel", args.fresnel},
+               {"strategy", args.strategy},
+               {"branches", args.branches}};
+  }
+  j["view_plane_distance"] = camera.ViewPlaneDistance();
+  return j.dump(2) + "\n";
+}
+
+void PrintSummary(const RenderArgs& args, const RenderSetup& s, const RenderResult& r) {
+  const RenderStats& st = r.stats;
+  const double total = static_cast<double>(st.TotalRays());
+  const unsigned long long spp = static_cast<unsigned long long>(r.passes) * s.raysPerPass;
+  std::fprintf(stderr,
+               "glint: %s %dx%d, %llu rays/pixel (%u pass%s), %d thread%s: %.3f s, %.3g rays "
+               "(camera %.3g, reflected %.3g, refracted %.3g, diffuse %.3g, shadow %.3g), "
+               "%.2f Mrays/s",
+               args.mode.c_str(), s.width, s.height, spp, r.passes, r.passes == 1 ? "" : "es",
+               s.threads, s.threads == 1 ? "" : "s", r.seconds, total,
+               static_cast<double>(st.cameraRays), static_cast<double>(st.reflectedRays),
+               static_cast<double>(st.refractedRays), static_cast<double>(st.diffuseRays),
+               static_cast<double>(st.shadowRays),
+               total / (r.seconds > 0.0 ? r.seconds : 1e-9) / 1e6);
+  if (st.nonFiniteSamples > 0) {
+    std::fprintf(stderr, ", %llu NaN/Inf samples dropped",
+                 static_cast<unsigned long long>(st.nonFiniteSamples));
+  }
+  std::fprintf(stderr, "\n");
+}
+
+int Render(const RenderArgs& args) {
+  const RenderSetup s = Prepare(args);
+  Camera camera(s.scene.wall, s.scene.camera.eye, s.width, s.height);
+  const std::unique_ptr<Integrator> integrator = MakeIntegrator(args, s);
+  const RenderResult r = RunPasses(camera, *integrator, args, s);
+
+  const auto target = [&](const std::string& path) {
+    return r.interrupted ? PartialPath(path) : path;
+  };
   try {
-    for (const std::string& path : outputs) camera.Save(path, exposure);
+    for (const std::string& path : s.outputs) camera.Save(target(path), s.exposure);
     if (!args.statsPath.empty()) {
-      WriteFileAtomically(args.statsPath, StatsJson(args, camera, spp, threads, seconds, stats));
+      WriteFileAtomically(target(args.statsPath), StatsJson(args, s, camera, r));
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "glint: %s\n", e.what());
     return kExitOutputFailed;
   }
-  if (!args.quiet) {
-    const double total = static_cast<double>(stats.TotalRays());
-    std::fprintf(
-        stderr,
-        "glint: %s %dx%d, %d rays/pixel, %d thread%s: %.3f s, %.3g rays "
-        "(camera %.3g, reflected %.3g, refracted %.3g, diffuse %.3g, shadow %.3g), "
-        "%.2f Mrays/s%s\n",
-        args.mode.c_str(), width, height, spp, threads, threads == 1 ? "" : "s", seconds, total,
-        static_cast<double>(stats.cameraRays), static_cast<double>(stats.reflectedRays),
-        static_cast<double>(stats.refractedRays), static_cast<double>(stats.diffuseRays),
-        static_cast<double>(stats.shadowRays), total / seconds / 1e6,
-        stats.nonFiniteSamples > 0
-            ? (", " + std::to_string(stats.nonFiniteSamples) + " NaN/Inf samples dropped").c_str()
-            : "");
+  if (r.interrupted) {
+    const int signal = InterruptSignal();
+    std::fprintf(stderr, "glint: stopped by %s after %.2f s; saved what was rendered to %s\n",
+                 signal == SIGTERM ? "SIGTERM" : "SIGINT", r.seconds,
+                 PartialPath(s.outputs.front()).c_str());
+    return 128 + signal;
   }
+  if (!args.quiet) PrintSummary(args, s, r);
   return kExitOk;
 }
 
-}  // namespace
-
-int RunCli(int argc, char** argv) {
-  CLI::App app{"glint: a small global-illumination renderer (Whitted and Monte Carlo)", "glint"};
-  app.footer(kExitCodes);
-  app.require_subcommand(1);
-  app.set_version_flag("--version", "glint 0.1");
-
-  RenderArgs args;
-  CLI::App* render = app.add_subcommand("render", "Render a scene file to one or more images");
-  render->footer(kExitCodes);
+void AddRenderOptions(CLI::App* render, RenderArgs& args) {
   render->add_option("scene", args.scene, "Scene file (JSON), e.g. scenes/cornell.json")
       ->required();
   render
@@ -221,8 +312,13 @@ int RunCli(int argc, char** argv) {
   render
       ->add_option("--spp", args.spp,
                    "Rays per pixel, through random points inside it; default: the scene's "
-                   "value for the mode")
+                   "value for the mode (with --time: rays per pass, default 1)")
       ->check(CLI::Range(1, 1 << 20));
+  render
+      ->add_option("--time", args.timeBudget,
+                   "Render progressively, pass after pass, until SECONDS would be exceeded; "
+                   "the summary and --stats give the rays per pixel reached")
+      ->check(CLI::Range(1e-3, 1e6));
   render
       ->add_option("--threads", args.threads,
                    "Worker threads; default: all cores. The image does not depend on it")
@@ -241,7 +337,7 @@ int RunCli(int argc, char** argv) {
                      "(display image), .pfm (linear radiance). Default: SCENE-NAME.png");
   render->add_option("--stats", args.statsPath,
                      "Write timing and ray counts by kind (camera, reflected, refracted, "
-                     "shadow) and the NaN/Inf sample count as JSON to this file");
+                     "diffuse, shadow) and the NaN/Inf sample count as JSON to this file");
   render->add_option("--set", args.overrides,
                      "Override a scene value by JSON pointer, repeatable: "
                      "--set /objects/1/ior=1.3");
@@ -276,6 +372,20 @@ int RunCli(int argc, char** argv) {
       ->check(CLI::IsMember({"mis", "light", "brdf"}))
       ->capture_default_str();
   render->add_flag("-q,--quiet", args.quiet, "No progress bar and no summary line");
+}
+
+}  // namespace
+
+int RunCli(int argc, char** argv) {
+  CLI::App app{"glint: a small global-illumination renderer (Whitted and Monte Carlo)", "glint"};
+  app.footer(kExitCodes);
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "glint 0.1");
+
+  RenderArgs args;
+  CLI::App* render = app.add_subcommand("render", "Render a scene file to one or more images");
+  render->footer(kExitCodes);
+  AddRenderOptions(render, args);
 
   try {
     app.parse(argc, argv);

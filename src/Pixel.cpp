@@ -5,11 +5,14 @@
 namespace glint {
 
 void Pixel::Render(const Camera& camera, int x, int y, int rays, const Integrator& integrator,
-                   Pcg32& rng, RayTree& trees, RenderStats& stats, bool keepTrees) {
+                   Pcg32& rng, RayTree& trees, RenderStats& stats, bool keepTrees,
+                   const std::atomic<bool>* cancel) {
   const double importance = 1.0 / rays;  // all rays of a pixel weigh the same
   Colour sum(0.0);
+  int finite = 0;
   trees.Clear();
   for (int i = 0; i < rays; ++i) {
+    if (cancel != nullptr && (i & 255) == 255 && cancel->load(std::memory_order_relaxed)) break;
     if (!keepTrees) trees.Clear();
     const double px = x + rng.Uniform();  // a random point inside the pixel
     const double py = y + rng.Uniform();
@@ -27,8 +30,12 @@ void Pixel::Render(const Camera& camera, int x, int y, int rays, const Integrato
       continue;
     }
     sum += importance * c;
+    ++finite;
   }
-  radiance_ = sum;
+  // The mean of the finite samples traced: sum_i C_i / N when all N are; dropped
+  // samples (and rays a cancel cut short) do not darken it.
+  if (finite > 0) sum_ += sum * (static_cast<double>(rays) / finite);
+  ++passes_;
 }
 
 }  // namespace glint

@@ -13,25 +13,23 @@ bool StderrIsTerminal() {
 ProgressBar::ProgressBar(bool enabled)
     : enabled_(enabled), start_(std::chrono::steady_clock::now()), last_(start_) {}
 
-void ProgressBar::Update(std::size_t done, std::size_t total) {
-  if (!enabled_ || total == 0) return;
+void ProgressBar::Update(double fraction, const char* label) {
+  if (!enabled_) return;
   const auto now = std::chrono::steady_clock::now();
-  if (drawn_ && done < total && now - last_ < std::chrono::milliseconds(100)) return;
+  if (drawn_ && fraction < 1.0 && now - last_ < std::chrono::milliseconds(100)) return;
   last_ = now;
   drawn_ = true;
   constexpr int kWidth = 40;
-  const double fraction = static_cast<double>(done) / static_cast<double>(total);
+  fraction = fraction < 0.0 ? 0.0 : (fraction > 1.0 ? 1.0 : fraction);
   const int filled = static_cast<int>(fraction * kWidth);
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   std::fprintf(stderr, "\r[");
   for (int i = 0; i < kWidth; ++i) std::fputc(i < filled ? '#' : ' ', stderr);
-  if (fraction > 0.0 && done < total) {
-    std::fprintf(stderr, "] %3d%%  %.1f s, about %.1f s left ", static_cast<int>(100 * fraction),
-                 elapsed, elapsed * (1.0 - fraction) / fraction);
-  } else {
-    std::fprintf(stderr, "] %3d%%  %.1f s                 ", static_cast<int>(100 * fraction),
-                 elapsed);
+  std::fprintf(stderr, "] %3d%%  %.1f s", static_cast<int>(100 * fraction), elapsed);
+  if (fraction > 0.0 && fraction < 1.0) {
+    std::fprintf(stderr, ", about %.1f s left", elapsed * (1.0 - fraction) / fraction);
   }
+  std::fprintf(stderr, " %s   ", label);
   std::fflush(stderr);
 }
 

@@ -9,8 +9,8 @@ namespace glint {
 class ProgressBar {
  public:
   explicit ProgressBar(bool enabled);
-  // Redraws at most ten times a second.
-  void Update(std::size_t done, std::size_t total);
+  // Redraws at most ten times a second; fraction in [0, 1], label after the bar.
+  void Update(double fraction, const char* label = "");
   // Clears the line.
   void Finish();
 

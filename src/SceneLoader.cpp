@@ -7,6 +7,10 @@ namespace glint {
 
 namespace {
 
+// Coordinates and lengths: generous, but far from where double arithmetic overflows.
+const Range kCoordinate = Range::Closed(-1e6, 1e6);
+const Range kLength = {0.0, 1e6, true, false};
+
 constexpr const char* kSideNames[Wall::kSides] = {"left", "ceiling", "right", "floor", "back"};
 
 // Where byte `offset` of `text` lies, as "line:column" (both from 1).
@@ -52,8 +56,8 @@ Material ReadObjectMaterial(const JsonReader& o) {
 void ReadRoom(const JsonReader& root, Scene& scene) {
   const JsonReader room = root.Object("room");
   room.RejectUnknownKeys({"position", "size", "walls"});
-  const vec3 position = room.Vec3("position", Range::Any());
-  const double size = room.Number("size", Range::Positive());
+  const vec3 position = room.Vec3("position", kCoordinate);
+  const double size = room.Number("size", kLength);
   const std::vector<JsonReader> walls = room.Objects("walls", Wall::kSides, Wall::kSides);
   std::array<Material, Wall::kSides> materials;
   for (int i = 0; i < Wall::kSides; ++i) {
@@ -87,15 +91,15 @@ void ReadObjects(const JsonReader& root, Scene& scene) {
     if (type == "sphere") {
       o.RejectUnknownKeys({"id", "type", "center", "radius", "material", "reflectance", "exponent",
                            "ior", "whitted_diffuse", "whitted_specular"});
-      const vec3 centre = o.Vec3("center", Range::Any());
-      const double radius = o.Number("radius", Range::Positive());
+      const vec3 centre = o.Vec3("center", kCoordinate);
+      const double radius = o.Number("radius", kLength);
       RequireInsideRoom(scene, o, "center", centre - vec3(radius), centre + vec3(radius));
       scene.spheres.emplace_back(centre, radius, ReadObjectMaterial(o), id);
     } else {
       o.RejectUnknownKeys({"id", "type", "position", "size", "material", "reflectance", "exponent",
                            "ior", "whitted_diffuse", "whitted_specular"});
-      const vec3 position = o.Vec3("position", Range::Any());
-      const double size = o.Number("size", Range::Positive());
+      const vec3 position = o.Vec3("position", kCoordinate);
+      const double size = o.Number("size", kLength);
       RequireInsideRoom(scene, o, "position", position, position + vec3(size));
       scene.cubes.emplace_back(position, size, ReadObjectMaterial(o), id);
     }
@@ -106,8 +110,8 @@ void ReadLights(const JsonReader& root, Scene& scene) {
   if (root.Has("area_light")) {
     const JsonReader a = root.Object("area_light");
     a.RejectUnknownKeys({"center", "side", "radiance"});
-    const vec3 centre = a.Vec3("center", Range::Any());
-    const double side = a.Number("side", Range::Positive());
+    const vec3 centre = a.Vec3("center", kCoordinate);
+    const double side = a.Number("side", kLength);
     const Colour radiance = a.Vec3("radiance", Range::AtLeast(0.0));
     const double ceiling = scene.wall.Position().y + scene.wall.Size();
     if (std::abs(centre.y - ceiling) > 1e-9 * (1.0 + scene.wall.Size())) {
@@ -122,15 +126,57 @@ void ReadLights(const JsonReader& root, Scene& scene) {
     scene.light.emplace(Rectangle(corner, vec3(side, 0.0, 0.0), vec3(0.0, 0.0, side)), radiance,
                         id);
   }
+  if (!root.Has("point_lights")) return;
   for (const JsonReader& p : root.Objects("point_lights", 0, 16)) {
     p.RejectUnknownKeys({"id", "position", "intensity"});
     PointLight light;
-    light.position = p.Vec3("position", Range::Any());
+    light.position = p.Vec3("position", kCoordinate);
     light.intensity = p.Vec3("intensity", Range::AtLeast(0.0));
     RequireInsideRoom(scene, p, "position", light.position, light.position);
     light.object = static_cast<int>(scene.objectNames.size());
     scene.objectNames.push_back(p.Has("id") ? p.Text("id") : "P");
     scene.pointLights.push_back(light);
+  }
+}
+
+// Squared distance from p to the box [lo, hi].
+double DistanceSquaredToBox(vec3 p, vec3 lo, vec3 hi) {
+  const vec3 q = glm::clamp(p, lo, hi);
+  return glm::dot(p - q, p - q);
+}
+
+// Objects that interpenetrate are legal but almost always a typo: warn about them.
+// Touching (a sphere resting on a cube) is not an overlap.
+void WarnAboutOverlaps(Scene& scene, const std::string& file) {
+  const double eps = 1e-9 * (1.0 + scene.wall.Size());
+  const auto name = [&](int object) { return scene.ObjectName(object); };
+  const auto warn = [&](int a, int b) {
+    scene.warnings.push_back(file + ": objects " + name(a) + " and " + name(b) + " overlap");
+  };
+  for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+    const Sphere& a = scene.spheres[i];
+    for (std::size_t j = i + 1; j < scene.spheres.size(); ++j) {
+      const Sphere& b = scene.spheres[j];
+      if (glm::length(a.Centre() - b.Centre()) < a.Radius() + b.Radius() - eps) {
+        warn(a.Object(), b.Object());
+      }
+    }
+    for (const Cube& c : scene.cubes) {
+      const double d2 =
+          DistanceSquaredToBox(a.Centre(), c.Position(), c.Position() + vec3(c.Size()));
+      if (std::sqrt(d2) < a.Radius() - eps) warn(a.Object(), c.Object());
+    }
+  }
+  for (std::size_t i = 0; i < scene.cubes.size(); ++i) {
+    for (std::size_t j = i + 1; j < scene.cubes.size(); ++j) {
+      const Cube& a = scene.cubes[i];
+      const Cube& b = scene.cubes[j];
+      const vec3 lo = glm::max(a.Position(), b.Position());
+      const vec3 hi = glm::min(a.Position() + vec3(a.Size()), b.Position() + vec3(b.Size()));
+      if (hi.x - lo.x > eps && hi.y - lo.y > eps && hi.z - lo.z > eps) {
+        warn(a.Object(), b.Object());
+      }
+    }
   }
 }
 
@@ -147,23 +193,27 @@ ModeSettings ReadMode(const JsonReader& root, const char* key, ModeSettings fall
 
 }  // namespace
 
-nlohmann::json ReadJsonFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the scene file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
+nlohmann::json ParseJsonText(const std::string& text, const std::string& name) {
   try {
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     // e.what() reads "[json.exception.parse_error.101] parse error at line 3, column 5:
     // syntax error ..."; keep the part after the position.
-    std::string what = e.what();
+    const std::string what = e.what();
     const std::size_t colon = what.find(": ", what.find("parse error"));
     const std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
     const std::size_t offset = e.byte > 0 ? e.byte - 1 : 0;
-    throw InputError(path + ":" + LineColumn(text, offset) + ": invalid JSON: " + detail);
+    throw InputError(name + ":" + LineColumn(text, offset) + ": invalid JSON: " + detail);
   }
+}
+
+nlohmann::json ReadJsonFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open the scene file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  if (!in.good() && !in.eof()) throw InputError(path + ": cannot read the scene file");
+  return ParseJsonText(buffer.str(), path);
 }
 
 void ApplyOverride(nlohmann::json& document, const std::string& assignment,
@@ -222,7 +272,7 @@ Scene SceneFromJson(const nlohmann::json& document, const std::string& file) {
 
   const JsonReader camera = root.Object("camera");
   camera.RejectUnknownKeys({"eye", "resolution"});
-  scene.camera.eye = camera.Vec3("eye", Range::Any());
+  scene.camera.eye = camera.Vec3("eye", kCoordinate);
   const vec3 back = scene.wall.Centre() - vec3(0.0, 0.0, 0.5 * scene.wall.Size());
   const double front = scene.wall.Position().z + scene.wall.Size();
   const vec3 eye = scene.camera.eye;
@@ -248,6 +298,8 @@ Scene SceneFromJson(const nlohmann::json& document, const std::string& file) {
 
   scene.whitted = ReadMode(root, "whitted", scene.whitted);
   scene.mc = ReadMode(root, "mc", scene.mc);
+  if (root.Has("description")) root.Text("description");
+  WarnAboutOverlaps(scene, file);
   return scene;
 }
 

@@ -77,8 +77,8 @@ void ExpectError(const std::vector<std::string>& overrides, const std::string& f
 
 TEST(SceneLoader, ErrorsNameTheFileTheFieldTheExpectationAndTheValue) {
   ExpectError({"/objects/0/radius=0"},
-              "/objects/0/radius: expected a number > 0, found the number 0");
-  ExpectError({"/objects/2/size=-1"}, "/objects/2/size: expected a number > 0");
+              "/objects/0/radius: expected a number in (0, 1000000], found the number 0");
+  ExpectError({"/objects/2/size=-1"}, "/objects/2/size: expected a number in (0, 1000000]");
   ExpectError({"/objects/1/ior=\"glass\""},
               "/objects/1/ior: expected a number >= 1, found the string \"glass\"");
   ExpectError({"/objects/0/type=cylinder"},

@@ -4,6 +4,7 @@
 // eye to the room's four front corners pass through the view plane's four corners.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -18,8 +19,12 @@
 namespace glint {
 
 struct RenderOptions {
-  int raysPerPixel = 1;
+  int raysPerPixel = 1;  // in this pass
   std::uint64_t seed = 1;
+  std::uint32_t pass = 0;  // passes draw independent random numbers
+  // Checked between pixels; when it turns true the pass stops early, leaving the
+  // remaining pixels as they were (for SIGINT and SIGTERM).
+  const std::atomic<bool>* cancel = nullptr;
   int threads = 0;  // 0: OpenMP's default
   // Called now and then from one thread with (pixels done, pixels in all).
   std::function<void(std::size_t, std::size_t)> progress;
@@ -46,9 +51,12 @@ class Camera {
   // Unit direction from the eye through image coordinates (px, py).
   vec3 DirectionThrough(double px, double py) const;
 
-  // Renders every pixel, in parallel over pixels. The result depends on the seed only,
-  // never on the number of threads: each pixel has its own random stream.
+  // Adds one pass over every pixel, in parallel over pixels. The result depends on the
+  // seed and the pass only, never on the number of threads: each pixel has its own
+  // random stream for each pass.
   RenderStats Render(const Integrator& integrator, const RenderOptions& options);
+  // Forgets all passes.
+  void Clear();
 
   const Pixel& PixelAt(int x, int y) const { return pixels_[Index(x, y)]; }
   Image ToImage() const;

@@ -1,8 +1,10 @@
 // One pixel of the Camera: it shoots its rays through random points inside itself,
 // has the integrator grow their ray trees, and keeps their equally weighted mean
-// (a box filter; each first ray has importance 1/N).
+// (a box filter; each first ray has importance 1/N). A progressive render adds passes
+// of N rays; the pixel's radiance is the mean of its passes.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 
 #include "glint/Integrator.hpp"
@@ -17,16 +19,22 @@ class Camera;
 
 class Pixel {
  public:
-  // Renders pixel (x, y) with `rays` rays. The trees are built in `trees`; with
-  // keepTrees all of them are left there (for drawing), otherwise the storage is
-  // reused from one ray to the next so that memory does not grow with N.
+  // Adds a pass of `rays` rays through pixel (x, y). The trees are built in `trees`;
+  // with keepTrees all of them are left there (for drawing), otherwise the storage is
+  // reused from one ray to the next so that memory does not grow with N. A NaN or Inf
+  // sample is counted and dropped; the pass averages the finite ones.
+  // If `cancel` turns true the pass ends early with the rays traced so far.
   void Render(const Camera& camera, int x, int y, int rays, const Integrator& integrator,
-              Pcg32& rng, RayTree& trees, RenderStats& stats, bool keepTrees = false);
+              Pcg32& rng, RayTree& trees, RenderStats& stats, bool keepTrees = false,
+              const std::atomic<bool>* cancel = nullptr);
 
-  Colour Radiance() const { return radiance_; }
+  Colour Radiance() const { return passes_ > 0 ? sum_ / static_cast<double>(passes_) : sum_; }
+  std::uint32_t Passes() const { return passes_; }
+  void Clear() { *this = Pixel(); }
 
  private:
-  Colour radiance_{0.0};
+  Colour sum_{0.0};  // sum of the passes' means
+  std::uint32_t passes_ = 0;
 };
 
 }  // namespace glint

@@ -11,9 +11,9 @@ class Pcg32 {
  public:
   Pcg32(std::uint64_t seed, std::uint64_t stream) { Seed(seed, stream); }
 
-  // The generator for one pixel of an image rendered with `seed`.
-  static Pcg32 ForPixel(std::uint64_t seed, std::uint64_t pixelIndex) {
-    return Pcg32(SplitMix64(seed ^ SplitMix64(pixelIndex)), pixelIndex);
+  // The generator for one pass over one pixel of an image rendered with `seed`.
+  static Pcg32 ForPixel(std::uint64_t seed, std::uint64_t pixelIndex, std::uint64_t pass = 0) {
+    return Pcg32(SplitMix64(seed ^ SplitMix64(pixelIndex ^ SplitMix64(pass))), pixelIndex);
   }
 
   std::uint32_t NextU32() {

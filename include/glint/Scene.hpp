@@ -39,6 +39,7 @@ class Scene {
   ModeSettings whitted{4, 10, 1.0};
   ModeSettings mc{64, 10, 1.0};
   std::vector<std::string> objectNames;  // W1..W5, the objects, the lights
+  std::vector<std::string> warnings;     // legal but suspicious input, e.g. overlaps
 
   // Closest hit along the ray. With `withAreaLight`, the light rectangle is part of the
   // scene and wins over the ceiling it lies in (spec: "a ray hits the light").

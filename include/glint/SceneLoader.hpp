@@ -14,6 +14,8 @@ namespace glint {
 
 // Parses the file; a syntax error becomes an InputError with file:line:column.
 nlohmann::json ReadJsonFile(const std::string& path);
+// The same for text already in memory; `name` stands for the file in messages.
+nlohmann::json ParseJsonText(const std::string& text, const std::string& name);
 
 // Applies one "POINTER=VALUE" override. VALUE is read as JSON, or as a string if it is
 // not JSON. The pointer's parent must exist in the document.

@@ -1,6 +1,8 @@
 #include "glint/Camera.hpp"
 
+#if defined(_OPENMP)
 #include <omp.h>
+#endif
 
 #include <atomic>
 #include <stdexcept>
@@ -8,6 +10,24 @@
 #include "glint/ImageIO.hpp"
 
 namespace glint {
+
+namespace {
+// OpenMP's queries, with a serial fallback for builds without OpenMP (the fuzzer's).
+int MaxThreads() {
+#if defined(_OPENMP)
+  return omp_get_max_threads();
+#else
+  return 1;
+#endif
+}
+int ThreadNumber() {
+#if defined(_OPENMP)
+  return omp_get_thread_num();
+#else
+  return 0;
+#endif
+}
+}  // namespace
 
 Camera::Camera(const Wall& room, vec3 eye, int width, int height)
     : eye_(eye), width_(width), height_(height) {
@@ -53,7 +73,7 @@ RenderStats Camera::Render(const Integrator& integrator, const RenderOptions& op
   const int chunks = (count + kChunk - 1) / kChunk;
   std::atomic<std::size_t> done{0};
   RenderStats total;
-#pragma omp parallel num_threads(options.threads > 0 ? options.threads : omp_get_max_threads())
+#pragma omp parallel num_threads(options.threads > 0 ? options.threads : MaxThreads())
   {
     RayTree trees;  // this thread's arena, reused for every pixel it renders
     RenderStats stats;
@@ -71,7 +91,7 @@ RenderStats Camera::Render(const Integrator& integrator, const RenderOptions& op
       }
       const std::size_t finished =
           done.fetch_add(static_cast<std::size_t>(end - chunk * kChunk), std::memory_order_relaxed);
-      if (options.progress && omp_get_thread_num() == 0) {
+      if (options.progress && ThreadNumber() == 0) {
         options.progress(finished, static_cast<std::size_t>(count));
       }
     }

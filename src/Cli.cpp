@@ -4,9 +4,11 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -109,18 +111,25 @@ void CheckMemory(int width, int height, int threads) {
   }
 }
 
+// Refuses an output whose folder is missing or cannot take a new file: it tries, with
+// a temporary file, so that a read-only file system is caught even for root.
 void CheckWritable(const std::string& path) {
   const std::filesystem::path p(path);
   const std::filesystem::path dir = p.has_parent_path() ? p.parent_path() : ".";
   if (!std::filesystem::is_directory(dir)) {
     throw InputError(path + ": the folder '" + dir.string() + "' does not exist");
   }
-  if (::access(dir.c_str(), W_OK) != 0) {
-    throw InputError(path + ": the folder '" + dir.string() + "' is not writable");
-  }
   if (std::filesystem::is_directory(p)) {
     throw InputError(path + ": is a folder, expected a file name");
   }
+  std::string probe = (dir / ".glint-write-test-XXXXXX").string();
+  const int fd = mkstemp(probe.data());
+  if (fd < 0) {
+    throw InputError(path + ": cannot write in the folder '" + dir.string() +
+                     "': " + std::strerror(errno));
+  }
+  ::close(fd);
+  std::remove(probe.c_str());
 }
 
 // "dir/name.ext" -> "dir/name.partial.ext"
@@ -326,6 +335,13 @@ void AddRenderOptions(CLI::App* render, RenderArgs& args) {
   render
       ->add_option("--seed", args.seed,
                    "Random seed; the same seed gives the same image for any --threads")
+      ->check(CLI::Validator(
+          [](const std::string& v) {
+            const bool digits = !v.empty() && v.size() <= 19 &&
+                                v.find_first_not_of("0123456789") == std::string::npos;
+            return digits ? std::string() : "expected a whole number >= 0, found " + v;
+          },
+          "UINT"))
       ->capture_default_str();
   render
       ->add_option("--exposure", args.exposure,
@@ -387,6 +403,15 @@ int RunCli(int argc, char** argv) {
   render->footer(kExitCodes);
   AddRenderOptions(render, args);
 
+  if (argc > 1 && argv[1][0] != '-') {
+    bool known = false;
+    for (const CLI::App* sub : app.get_subcommands({})) known |= sub->get_name() == argv[1];
+    if (!known) {
+      std::fprintf(stderr, "glint: unknown command '%s'; try 'glint render SCENE' (glint --help)\n",
+                   argv[1]);
+      return kExitBadInput;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -204,6 +204,13 @@ nlohmann::json ParseJsonText(const std::string& text, const std::string& name) {
     const std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
     const std::size_t offset = e.byte > 0 ? e.byte - 1 : 0;
     throw InputError(name + ":" + LineColumn(text, offset) + ": invalid JSON: " + detail);
+  } catch (const nlohmann::json::exception& e) {
+    // Not a syntax error but still bad input, e.g. "number overflow parsing '1E6817'"
+    // (found by the fuzzer). Drop the "[json.exception.out_of_range.406] " prefix.
+    const std::string what = e.what();
+    const std::size_t bracket = what.find("] ");
+    throw InputError(name + ": invalid JSON: " +
+                     (bracket == std::string::npos ? what : what.substr(bracket + 2)));
   }
 }
 

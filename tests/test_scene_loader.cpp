@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
 #include "TestScenes.hpp"
 
 namespace glint {
@@ -117,6 +121,36 @@ TEST(SceneLoader, DidYouMean) {
   EXPECT_EQ(EditDistance("radious", "radius"), 1u);
   EXPECT_EQ(EditDistance("", "abc"), 3u);
   ExpectError({"/objects/0/exponant=3"}, "did you mean \"exponent\"?");
+}
+
+TEST(SceneLoader, FuzzCorpusAndRegressionsLoadOrFailCleanly) {
+  // Every seed and every input the fuzzer once crashed on: a scene or an InputError.
+  int files = 0;
+  for (const char* dir : {"tests/fuzz/corpus", "tests/fuzz/regressions", "tests/scenes"}) {
+    for (const auto& entry : std::filesystem::directory_iterator(SourcePath(dir))) {
+      std::ifstream in(entry.path(), std::ios::binary);
+      std::stringstream text;
+      text << in.rdbuf();
+      ++files;
+      try {
+        SceneFromJson(ParseJsonText(text.str(), entry.path().string()), entry.path().string());
+      } catch (const InputError&) {
+      } catch (const std::exception& e) {
+        ADD_FAILURE() << entry.path() << ": " << e.what();
+      }
+    }
+  }
+  EXPECT_GT(files, 10);
+}
+
+TEST(SceneLoader, OverlapsAreWarnedAbout) {
+  EXPECT_TRUE(CanonicalScene().warnings.empty());  // touching the floor is no overlap
+  const Scene s = CanonicalScene({"/objects/1/center=[0.6, 0.16, 0.3]"});
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_NE(s.warnings[0].find("objects O2 and O3 overlap"), std::string::npos) << s.warnings[0];
+  const Scene t = CanonicalScene({"/objects/0/center=[0.6, 0.18, 0.6]"});
+  ASSERT_EQ(t.warnings.size(), 1u);
+  EXPECT_NE(t.warnings[0].find("O1 and O2"), std::string::npos) << t.warnings[0];
 }
 
 }  // namespace

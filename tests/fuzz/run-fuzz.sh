@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# run-fuzz.sh SOURCE_DIR WORK_DIR [SECONDS]: builds the scene-loader fuzzer with clang
+# (-fsanitize=fuzzer,address,undefined) and runs it for a bounded time on a copy of the
+# seed corpus. Exit 77 (skipped) where clang or libFuzzer is missing.
+set -euo pipefail
+src=$1
+work=$2
+seconds=${3:-30}
+if ! command -v clang++ >/dev/null; then
+  echo "skipped: clang++ not found"
+  exit 77
+fi
+mkdir -p "$work/obj" "$work/corpus" "$work/artifacts"
+flags=(-std=c++20 -O1 -g -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined
+       -DGLM_FORCE_XYZW_ONLY -I"$src/include" -isystem /usr/include/stb -w)
+sources=(Camera Cube Fresnel Image ImageIO JsonReader Light MonteCarloIntegrator Pixel Rectangle
+         Scene SceneLoader Sphere StbImageWrite Wall WhittedIntegrator)
+objects=()
+for s in "${sources[@]}"; do
+  obj="$work/obj/$s.o"
+  if [ ! -f "$obj" ] || [ "$src/src/$s.cpp" -nt "$obj" ] || [ -n "$(find "$src/include" -newer "$obj" -name '*.hpp' | head -1)" ]; then
+    clang++ "${flags[@]}" -c "$src/src/$s.cpp" -o "$obj" &
+  fi
+  objects+=("$obj")
+  # two compilers at a time
+  while [ "$(jobs -rp | wc -l)" -ge 2 ]; do wait -n; done
+done
+wait
+clang++ "${flags[@]}" -fsanitize=fuzzer "$src/tests/fuzz/scene_fuzzer.cpp" "${objects[@]}" \
+  -o "$work/scene_fuzzer"
+cp "$src"/tests/fuzz/corpus/* "$src"/tests/fuzz/regressions/* "$work/corpus/" 2>/dev/null || true
+cd "$work"
+./scene_fuzzer -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 \
+  -artifact_prefix="$work/artifacts/" -print_final_stats=1 corpus/
+echo "fuzzer: no crash in ${seconds} s (artifacts, if any, in $work/artifacts)"

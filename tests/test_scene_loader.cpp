@@ -100,6 +100,22 @@ TEST(SceneLoader, ErrorsNameTheFileTheFieldTheExpectationAndTheValue) {
   ExpectError({"/objects/0/whitted_diffuse=0.6", "/objects/0/whitted_specular=0.6"}, "sum to 1");
   ExpectError({"/whitted/spp=0"}, "/whitted/spp: expected a whole number in [1, 1048576]");
   ExpectError({"/objects/0/colour=[1,1,1]"}, "unknown field \"colour\"");
+  ExpectError({"/objects/2/position=[0.8, 0.0, 0.06]"},
+              "/objects/2/position: expected an object inside the room");
+  ExpectError({"/area_light/side=1.5"}, "/area_light/side: expected an object inside the room");
+  ExpectError({"/area_light/radiance=[50, -1, 50]"},
+              "/area_light/radiance: expected an array of 3 numbers >= 0");
+  ExpectError({"/point_lights/1/intensity=[1, 1]"},
+              "/point_lights/1/intensity: expected an array of 3 numbers");
+  ExpectError({"/room/size=0"}, "/room/size: expected a number in (0, 1000000]");
+  ExpectError({"/mc/max_depth=0"}, "/mc/max_depth: expected a whole number in [1, 64]");
+  ExpectError({"/whitted/exposure=-1"}, "/whitted/exposure: expected a number > 0");
+  ExpectError({"/objects/0/center=[1e300, 0, 0]"},
+              "/objects/0/center: expected an array of 3 numbers in [-1000000, 1000000]");
+  ExpectError({"/camera/resolution=[64, 64, 64]"}, "/camera/resolution: expected [width, height]");
+  ExpectError({"/objects/1/material=wood"},
+              "/objects/1/material: expected one of \"phong\", \"mirror\" or \"glass\"");
+  ExpectError({"/description=7"}, "/description: expected a non-empty string, found the number 7");
 }
 
 TEST(SceneLoader, SyntaxErrorsGiveLineAndColumn) {

@@ -73,9 +73,12 @@ RenderStats Camera::Render(const Integrator& integrator, const RenderOptions& op
   const int chunks = (count + kChunk - 1) / kChunk;
   std::atomic<std::size_t> done{0};
   RenderStats total;
-#pragma omp parallel num_threads(options.threads > 0 ? options.threads : MaxThreads())
+  const int threads = options.threads > 0 ? options.threads : MaxThreads();
+  if (arenas_.size() < static_cast<std::size_t>(threads))
+    arenas_.resize(static_cast<std::size_t>(threads));
+#pragma omp parallel num_threads(threads)
   {
-    RayTree trees;  // this thread's arena, reused for every pixel it renders
+    RayTree& trees = arenas_[static_cast<std::size_t>(ThreadNumber())];  // reused for every pixel
     RenderStats stats;
     // Chunks of consecutive pixels, handed out dynamically: the progress counter and
     // the cancel flag are touched once a chunk, not once a pixel.

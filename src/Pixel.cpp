@@ -8,8 +8,6 @@ void Pixel::Render(const Camera& camera, int x, int y, int rays, const Integrato
                    Pcg32& rng, RayTree& trees, RenderStats& stats, bool keepTrees,
                    const std::atomic<bool>* cancel) {
   const double importance = 1.0 / rays;  // all rays of a pixel weigh the same
-  Colour sum(0.0);
-  int finite = 0;
   trees.Clear();
   for (int i = 0; i < rays; ++i) {
     if (cancel != nullptr && (i & 255) == 255 && cancel->load(std::memory_order_relaxed)) break;
@@ -29,13 +27,11 @@ void Pixel::Render(const Camera& camera, int x, int y, int rays, const Integrato
       ++stats.nonFiniteSamples;
       continue;
     }
-    sum += importance * c;
-    ++finite;
+    // Radiance() = sum_i C_i / N over the finite samples: each first ray's colour times
+    // its importance 1/N. Dropped samples (and rays a cancel cut short) do not darken it.
+    sum_ += c;
+    ++samples_;
   }
-  // The mean of the finite samples traced: sum_i C_i / N when all N are; dropped
-  // samples (and rays a cancel cut short) do not darken it.
-  if (finite > 0) sum_ += sum * (static_cast<double>(rays) / finite);
-  ++passes_;
 }
 
 }  // namespace glint

@@ -78,6 +78,9 @@ class Camera {
   int width_;
   int height_;
   std::vector<Pixel> pixels_;
+  // One ray-tree arena per thread, kept from pass to pass so that progressive rendering
+  // allocates nothing after the first pass.
+  std::vector<RayTree> arenas_;
 };
 
 }  // namespace glint

@@ -1,7 +1,7 @@
 // One pixel of the Camera: it shoots its rays through random points inside itself,
 // has the integrator grow their ray trees, and keeps their equally weighted mean
-// (a box filter; each first ray has importance 1/N). A progressive render adds passes
-// of N rays; the pixel's radiance is the mean of its passes.
+// (a box filter; each first ray has importance 1/N). A progressive render adds passes;
+// the pixel's radiance is the mean of all its finite samples.
 #pragma once
 
 #include <atomic>
@@ -28,13 +28,13 @@ class Pixel {
               Pcg32& rng, RayTree& trees, RenderStats& stats, bool keepTrees = false,
               const std::atomic<bool>* cancel = nullptr);
 
-  Colour Radiance() const { return passes_ > 0 ? sum_ / static_cast<double>(passes_) : sum_; }
-  std::uint32_t Passes() const { return passes_; }
+  Colour Radiance() const { return samples_ > 0 ? sum_ / static_cast<double>(samples_) : sum_; }
+  std::uint64_t Samples() const { return samples_; }
   void Clear() { *this = Pixel(); }
 
  private:
-  Colour sum_{0.0};  // sum of the passes' means
-  std::uint32_t passes_ = 0;
+  Colour sum_{0.0};  // sum of the finite samples' colours
+  std::uint64_t samples_ = 0;
 };
 
 }  // namespace glint

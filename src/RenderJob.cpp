@@ -1,0 +1,235 @@
+#include "RenderJob.hpp"
+
+#include <omp.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "Interrupt.hpp"
+#include "Progress.hpp"
+#include "glint/ImageIO.hpp"
+#include "glint/SceneLoader.hpp"
+#include "glint/WhittedIntegrator.hpp"
+
+namespace glint {
+
+namespace {
+
+// "N" or "WxH" into width and height.
+void ParseSize(const std::string& text, int& width, int& height) {
+  const auto fail = [&]() {
+    throw InputError("--size " + text + ": expected N or WxH with whole numbers in [1, 65536]");
+  };
+  const auto parse = [&](const std::string& s) {
+    if (s.empty() || s.size() > 6 || s.find_first_not_of("0123456789") != std::string::npos) {
+      fail();
+    }
+    const long v = std::stol(s);
+    if (v < 1 || v > 65536) fail();
+    return static_cast<int>(v);
+  };
+  const std::size_t x = text.find_first_of("xX");
+  if (x == std::string::npos) {
+    width = height = parse(text);
+  } else {
+    width = parse(text.substr(0, x));
+    height = parse(text.substr(x + 1));
+  }
+}
+
+// Refuses an image whose buffers would not fit in this machine's memory.
+void CheckMemory(int width, int height, int threads) {
+  const double pixels = static_cast<double>(width) * static_cast<double>(height);
+  // The Pixel array, the linear image for output, the 8-bit display image and its
+  // encoding, and each thread's ray-tree arena.
+  const double bytes = pixels * (sizeof(Pixel) + sizeof(Colour) + 3.0 + 4.0) +
+                       threads * static_cast<double>(4096 * sizeof(Ray));
+  const double physical =
+      static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  if (physical > 0.0 && bytes > 0.8 * physical) {
+    char message[256];
+    std::snprintf(message, sizeof message,
+                  "--size %dx%d: the image needs about %.1f GiB of memory, more than this "
+                  "machine can give (%.1f GiB)",
+                  width, height, bytes / (1 << 30), physical / (1 << 30));
+    throw InputError(message);
+  }
+}
+
+}  // namespace
+
+// Refuses an output whose folder is missing or cannot take a new file: it tries, with
+// a temporary file, so that a read-only file system is caught even for root.
+void CheckWritable(const std::string& path) {
+  const std::filesystem::path p(path);
+  const std::filesystem::path dir = p.has_parent_path() ? p.parent_path() : ".";
+  if (!std::filesystem::is_directory(dir)) {
+    throw InputError(path + ": the folder '" + dir.string() + "' does not exist");
+  }
+  if (std::filesystem::is_directory(p)) {
+    throw InputError(path + ": is a folder, expected a file name");
+  }
+  std::string probe = (dir / ".glint-write-test-XXXXXX").string();
+  const int fd = mkstemp(probe.data());
+  if (fd < 0) {
+    throw InputError(path + ": cannot write in the folder '" + dir.string() +
+                     "': " + std::strerror(errno));
+  }
+  ::close(fd);
+  std::remove(probe.c_str());
+}
+
+// "dir/name.ext" -> "dir/name.partial.ext"
+std::string PartialPath(const std::string& path) {
+  std::filesystem::path p(path);
+  const std::string ext = p.extension().string();
+  p.replace_extension();
+  return p.string() + ".partial" + ext;
+}
+
+RenderSetup Prepare(const RenderArgs& args, bool checkOutputs) {
+  RenderSetup s;
+  s.scene = LoadScene(args.scene, args.overrides);
+  for (const std::string& w : s.scene.warnings)
+    std::fprintf(stderr, "glint: warning: %s\n", w.c_str());
+  s.mode = args.mode == "mc" ? s.scene.mc : s.scene.whitted;
+  s.width = s.scene.camera.width;
+  s.height = s.scene.camera.height;
+  if (!args.size.empty()) ParseSize(args.size, s.width, s.height);
+  s.threads = args.threads > 0 ? args.threads : omp_get_max_threads();
+  CheckMemory(s.width, s.height, s.threads);
+  // With a time budget, --spp is the rays per pixel of each pass (default 1).
+  s.raysPerPass = args.spp > 0 ? args.spp : (args.timeBudget > 0.0 ? 1 : s.mode.spp);
+  s.exposure = args.exposure > 0.0 ? args.exposure : s.mode.exposure;
+  s.outputs = args.outputs;
+  if (!checkOutputs) return s;
+  if (s.outputs.empty()) {
+    s.outputs.push_back(std::filesystem::path(args.scene).stem().string() + ".png");
+  }
+  for (const std::string& path : s.outputs) {
+    FormatFromPath(path);
+    CheckWritable(path);
+  }
+  if (!args.statsPath.empty()) CheckWritable(args.statsPath);
+  return s;
+}
+
+namespace {
+MonteCarloOptions McOptions(const RenderArgs& args, const ModeSettings& mode) {
+  using O = MonteCarloOptions;
+  O o;
+  o.walls = args.walls == "diffuse" ? O::Walls::Diffuse : O::Walls::Terminal;
+  o.glass = args.glass == "choose" ? O::Glass::Choose : O::Glass::Split;
+  o.fresnel = args.fresnel == "small-angle" ? O::Fresnel::SmallAngle : O::Fresnel::Exact;
+  o.strategy = args.strategy == "light"  ? O::Strategy::Light
+               : args.strategy == "brdf" ? O::Strategy::Brdf
+                                         : O::Strategy::Mis;
+  o.branches = args.branches;
+  o.maxDepth = mode.maxDepth;
+  return o;
+}
+
+}  // namespace
+
+std::unique_ptr<Integrator> MakeIntegrator(const RenderArgs& args, const RenderSetup& s) {
+  if (args.mode == "mc")
+    return std::make_unique<MonteCarloIntegrator>(s.scene, McOptions(args, s.mode));
+  return std::make_unique<WhittedIntegrator>(s.scene, s.mode.maxDepth);
+}
+
+// One pass, or passes until the time budget would be overspent.
+RenderResult RunPasses(Camera& camera, const Integrator& integrator, const RenderArgs& args,
+                       const RenderSetup& s) {
+  const std::atomic<bool>& interrupted = InstallInterruptHandlers();
+  ProgressBar bar(!args.quiet && StderrIsTerminal());
+  const auto start = std::chrono::steady_clock::now();
+  const auto elapsed = [&]() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  const bool progressive = args.timeBudget > 0.0;
+  RenderResult r;
+  RenderOptions options;
+  options.raysPerPixel = s.raysPerPass;
+  options.seed = args.seed;
+  options.threads = args.threads;
+  options.cancel = &interrupted;
+  std::string label;
+  options.progress = [&](std::size_t done, std::size_t total) {
+    const double pass = static_cast<double>(done) / static_cast<double>(total);
+    bar.Update(progressive ? elapsed() / args.timeBudget : pass, label.c_str());
+  };
+  double lastPass = 0.0;
+  do {
+    options.pass = r.passes;
+    label = progressive ? "pass " + std::to_string(r.passes + 1) : "";
+    const double before = elapsed();
+    r.stats += camera.Render(integrator, options);
+    lastPass = elapsed() - before;
+    if (interrupted.load()) break;
+    ++r.passes;
+  } while (progressive && elapsed() + lastPass <= args.timeBudget);
+  r.seconds = elapsed();
+  r.interrupted = interrupted.load();
+  bar.Finish();
+  return r;
+}
+
+std::string StatsJson(const RenderArgs& args, const RenderSetup& s, const Camera& camera,
+                      const RenderResult& r) {
+  const RenderStats& st = r.stats;
+  nlohmann::json j;
+  j["scene"] = args.scene;
+  j["mode"] = args.mode;
+  j["width"] = camera.Width();
+  j["height"] = camera.Height();
+  j["spp"] = static_cast<std::uint64_t>(r.passes) * static_cast<std::uint64_t>(s.raysPerPass);
+  j["passes"] = r.passes;
+  j["threads"] = s.threads;
+  j["seed"] = args.seed;
+  j["seconds"] = r.seconds;
+  if (args.timeBudget > 0.0) j["time_budget"] = args.timeBudget;
+  j["rays"] = {{"camera", st.cameraRays},       {"reflected", st.reflectedRays},
+               {"refracted", st.refractedRays}, {"diffuse", st.diffuseRays},
+               {"shadow", st.shadowRays},       {"total", st.TotalRays()}};
+  const double seconds = r.seconds > 0.0 ? r.seconds : 1e-9;
+  j["mrays_per_second"] = static_cast<double>(st.TotalRays()) / seconds / 1e6;
+  j["camera_paths_per_second"] = static_cast<double>(st.cameraRays) / seconds;
+  j["nonfinite_samples"] = st.nonFiniteSamples;
+  j["interrupted"] = r.interrupted;
+  if (args.mode == "mc") {
+    j["mc"] = {{"walls", args.walls},
+               {"glass", args.glass},
+               {"fresnel", args.fresnel},
+               {"strategy", args.strategy},
+               {"branches", args.branches}};
+  }
+  j["view_plane_distance"] = camera.ViewPlaneDistance();
+  return j.dump(2) + "\n";
+}
+
+void PrintSummary(const RenderArgs& args, const RenderSetup& s, const RenderResult& r) {
+  const RenderStats& st = r.stats;
+  const double total = static_cast<double>(st.TotalRays());
+  const unsigned long long spp = static_cast<unsigned long long>(r.passes) * s.raysPerPass;
+  std::fprintf(stderr,
+               "glint: %s %dx%d, %llu rays/pixel (%u pass%s), %d thread%s: %.3f s, %.3g rays "
+               "(camera %.3g, reflected %.3g, refracted %.3g, diffuse %.3g, shadow %.3g), "
+               "%.2f Mrays/s",
+               args.mode.c_str(), s.width, s.height, spp, r.passes, r.passes == 1 ? "" : "es",
+               s.threads, s.threads == 1 ? "" : "s", r.seconds, total,
+               static_cast<double>(st.cameraRays), static_cast<double>(st.reflectedRays),
+               static_cast<double>(st.refractedRays), static_cast<double>(st.diffuseRays),
+               static_cast<double>(st.shadowRays),
+               total / (r.seconds > 0.0 ? r.seconds : 1e-9) / 1e6);
+  if (st.nonFiniteSamples > 0) {
+    std::fprintf(stderr, ", %llu NaN/Inf samples dropped",
+                 static_cast<unsigned long long>(st.nonFiniteSamples));
+  }
+  std::fprintf(stderr, "\n");
+}
+
+}  // namespace glint

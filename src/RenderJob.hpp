@@ -1,0 +1,71 @@
+// What a render needs from the command line, checked before any time is spent, and the
+// loop of passes shared by `glint render` and `glint converge`.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "glint/Camera.hpp"
+#include "glint/Integrator.hpp"
+#include "glint/MonteCarloIntegrator.hpp"
+#include "glint/Scene.hpp"
+
+namespace glint {
+
+struct RenderArgs {
+  std::string scene;
+  std::string mode = "whitted";
+  std::string size;
+  int spp = 0;
+  double timeBudget = 0.0;
+  int threads = 0;
+  std::uint64_t seed = 1;
+  double exposure = 0.0;
+  std::vector<std::string> outputs;
+  std::string statsPath;
+  std::vector<std::string> overrides;
+  bool quiet = false;
+  std::string walls = "terminal";
+  std::string glass = "split";
+  std::string fresnel = "exact";
+  std::string strategy = "mis";
+  int branches = 1;
+};
+
+// Everything a render needs, checked before any time is spent rendering.
+struct RenderSetup {
+  Scene scene;
+  ModeSettings mode;
+  int width = 0;
+  int height = 0;
+  int raysPerPass = 1;
+  int threads = 1;
+  double exposure = 1.0;
+  std::vector<std::string> outputs;
+};
+
+struct RenderResult {
+  RenderStats stats;
+  double seconds = 0.0;
+  std::uint32_t passes = 0;
+  bool interrupted = false;
+};
+
+// Loads the scene, prints its warnings, and checks the size, memory and outputs; throws
+// InputError on bad input. With checkOutputs false, no output file is needed.
+RenderSetup Prepare(const RenderArgs& args, bool checkOutputs = true);
+// Refuses an output whose folder is missing or cannot take a new file.
+void CheckWritable(const std::string& path);
+std::unique_ptr<Integrator> MakeIntegrator(const RenderArgs& args, const RenderSetup& s);
+// One pass, or passes until args.timeBudget would be overspent.
+RenderResult RunPasses(Camera& camera, const Integrator& integrator, const RenderArgs& args,
+                       const RenderSetup& s);
+// The --stats JSON and the summary line.
+std::string StatsJson(const RenderArgs& args, const RenderSetup& s, const Camera& camera,
+                      const RenderResult& r);
+void PrintSummary(const RenderArgs& args, const RenderSetup& s, const RenderResult& r);
+// "dir/name.ext" -> "dir/name.partial.ext"
+std::string PartialPath(const std::string& path);
+
+}  // namespace glint

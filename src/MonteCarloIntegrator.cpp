@@ -93,9 +93,15 @@ int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, Pcg32&
       }
       return k;
     }
-    case MaterialType::Mirror:
-      out[0] = {glm::normalize(Reflect(d, n)), m.reflectance, 0.0, RayKind::Reflected, ray.inside};
+    case MaterialType::Mirror: {
+      // The spec's mirror is the n -> infinity limit of the normalised Phong BRDF. Its
+      // importance rho (n + 2) / (n + 1) cos(theta) tends to rho cos(theta) as the lobe
+      // closes on R, so the limit reflects rho cos(theta), not rho (a textbook mirror).
+      const vec3 r = glm::normalize(Reflect(d, n));
+      out[0] = {r, m.reflectance * std::max(0.0, glm::dot(n, r)), 0.0, RayKind::Reflected,
+                ray.inside};
       return 1;
+    }
     case MaterialType::Glass: {
       const vec3 mirror = glm::normalize(Reflect(d, hit.normal));
       const std::optional<vec3> refracted = Refract(d, hit.normal, m.ior);

@@ -17,6 +17,7 @@
 #include "Converge.hpp"
 #include "Interrupt.hpp"
 #include "RenderJob.hpp"
+#include "TreeCommand.hpp"
 #include "glint/Camera.hpp"
 #include "glint/ImageIO.hpp"
 #include "glint/MonteCarloIntegrator.hpp"
@@ -181,6 +182,16 @@ int RunCli(int argc, char** argv) {
                    "Compare values of one switch in one chart: strategy=mis,light,brdf, "
                    "glass=split,choose, fresnel=exact,small-angle, walls=terminal,diffuse or "
                    "branches=1,2,4");
+  TreeArgs tree;
+  CLI::App* treeCommand = app.add_subcommand(
+      "tree", "Write the ray trees of one pixel as a Graphviz graph (render it with dot -Tpng)");
+  treeCommand->footer(kExitCodes);
+  AddRenderOptions(treeCommand, tree.render, false);
+  treeCommand->add_option("--pixel", tree.pixel, "The pixel, X,Y (0,0 is top left)")->required();
+  treeCommand->add_option("-o,--output", tree.output, "Graphviz file")->capture_default_str();
+  treeCommand->add_option("--max-nodes", tree.maxNodes, "Draw at most this many nodes")
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
   conv->add_option("--csv", converge.csv, "CSV of the measurements")->capture_default_str();
   conv->add_option(
           "--chart", converge.chart,
@@ -212,6 +223,7 @@ int RunCli(int argc, char** argv) {
   try {
     if (*render) return Render(args);
     if (*conv) return RunConverge(converge);
+    if (*treeCommand) return RunTree(tree);
   } catch (const InputError& e) {
     std::fprintf(stderr, "glint: %s\n", e.what());
     return kExitBadInput;

@@ -1,0 +1,108 @@
+#include "TreeCommand.hpp"
+
+#include <cstdio>
+
+#include "Cli.hpp"
+#include "glint/ImageIO.hpp"
+#include "glint/JsonReader.hpp"
+
+namespace glint {
+
+namespace {
+
+const char* KindName(RayKind kind) {
+  switch (kind) {
+    case RayKind::Camera:
+      return "camera";
+    case RayKind::Reflected:
+      return "reflected";
+    case RayKind::Refracted:
+      return "refracted";
+    case RayKind::Diffuse:
+      return "diffuse";
+  }
+  return "?";
+}
+
+const char* KindColour(RayKind kind) {
+  switch (kind) {
+    case RayKind::Camera:
+      return "#dddddd";
+    case RayKind::Reflected:
+      return "#cfe2ff";
+    case RayKind::Refracted:
+      return "#d8f5d0";
+    case RayKind::Diffuse:
+      return "#ffe7c2";
+  }
+  return "white";
+}
+
+std::string Dot(const RayTree& tree, const Scene& scene, int x, int y, int maxNodes) {
+  std::string out = "digraph ray_tree {\n  label=\"glint: the ray trees of pixel (" +
+                    std::to_string(x) + ", " + std::to_string(y) +
+                    "); C_R = L_local + sum W_i C_i\";\n  labelloc=t;\n"
+                    "  node [shape=box, style=\"rounded,filled\", fontname=\"Helvetica\", "
+                    "fontsize=10];\n  edge [fontname=\"Helvetica\", fontsize=9];\n";
+  const int count = std::min<int>(maxNodes, static_cast<int>(tree.Size()));
+  char line[512];
+  for (int i = 0; i < count; ++i) {
+    const Ray& r = tree[static_cast<std::uint32_t>(i)];
+    const std::string hit = r.object >= 0 ? scene.ObjectName(r.object) : "nothing (open front)";
+    std::snprintf(line, sizeof line,
+                  "  n%d [fillcolor=\"%s\", label=\"%s ray, depth %d%s%s\\nhits %s\\nimportance "
+                  "%.3g %.3g %.3g\\ncolour %.3g %.3g %.3g\"];\n",
+                  i, KindColour(r.kind), KindName(r.kind), r.depth, r.inside ? ", inside" : "",
+                  r.final ? ", final" : "", hit.c_str(), r.importance.x, r.importance.y,
+                  r.importance.z, r.colour.x, r.colour.y, r.colour.z);
+    out += line;
+    for (std::uint32_t k = 0; k < r.childCount; ++k) {
+      const std::uint32_t c = r.firstChild + k;
+      if (static_cast<int>(c) >= count) continue;
+      std::snprintf(line, sizeof line, "  n%d -> n%u [label=\"W %.3g %.3g %.3g\"];\n", i, c,
+                    tree[c].weight.x, tree[c].weight.y, tree[c].weight.z);
+      out += line;
+    }
+  }
+  if (count < static_cast<int>(tree.Size())) {
+    out += "  more [shape=plaintext, label=\"... " + std::to_string(tree.Size() - count) +
+           " more nodes (--max-nodes)\"];\n";
+  }
+  return out + "}\n";
+}
+
+}  // namespace
+
+int RunTree(const TreeArgs& a) {
+  int x = 0;
+  int y = 0;
+  if (std::sscanf(a.pixel.c_str(), "%d,%d", &x, &y) != 2) {
+    throw InputError("--pixel " + a.pixel + ": expected X,Y, e.g. --pixel 256,300");
+  }
+  RenderArgs args = a.render;
+  const RenderSetup s = Prepare(args, /*checkOutputs=*/false);
+  if (x < 0 || y < 0 || x >= s.width || y >= s.height) {
+    throw InputError("--pixel " + a.pixel + ": outside the " + std::to_string(s.width) + "x" +
+                     std::to_string(s.height) + " image");
+  }
+  CheckWritable(a.output);
+  const Camera camera(s.scene.wall, s.scene.camera.eye, s.width, s.height);
+  const std::unique_ptr<Integrator> integrator = MakeIntegrator(args, s);
+  // The same random stream as pixel (x, y) of the first pass of `glint render`.
+  const auto index = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(s.width) +
+                     static_cast<std::uint64_t>(x);
+  Pcg32 rng = Pcg32::ForPixel(args.seed, index, 0);
+  RayTree trees;
+  RenderStats stats;
+  Pixel pixel;
+  pixel.Render(camera, x, y, args.spp > 0 ? args.spp : 1, *integrator, rng, trees, stats,
+               /*keepTrees=*/true);
+  WriteFileAtomically(a.output, Dot(trees, s.scene, x, y, a.maxNodes));
+  const Colour c = pixel.Radiance();
+  std::fprintf(stderr,
+               "glint tree: pixel (%d, %d): %zu ray nodes, radiance %.4g %.4g %.4g; wrote %s\n", x,
+               y, trees.Size(), c.x, c.y, c.z, a.output.c_str());
+  return kExitOk;
+}
+
+}  // namespace glint

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# figures_test.sh SOURCE_DIR GLINT OUT: tools/figures --quick writes all ten figures, a
+# well-formed CSV behind each, and the report page that shows them.
+set -eu
+src=$1
+glint=$2
+out=$3
+rm -rf "$out"
+"$src/tools/figures" --quick --glint "$glint" --out "$out"
+/usr/bin/python3 - "$out" <<'PY'
+import csv, glob, os, sys
+out = sys.argv[1]
+pngs = sorted(glob.glob(os.path.join(out, "[0-9]*-*.png")))
+csvs = sorted(glob.glob(os.path.join(out, "[0-9]*-*.csv")))
+assert len(pngs) == 10, f"{len(pngs)} figures: {pngs}"
+assert len(csvs) == 10, f"{len(csvs)} tables: {csvs}"
+for p in pngs:
+    with open(p, "rb") as f:
+        assert f.read(8) == b"\x89PNG\r\n\x1a\n", p
+    assert os.path.getsize(p) > 5000, f"{p} is suspiciously small"
+for c in csvs:
+    rows = list(csv.reader(open(c)))
+    assert len(rows) >= 2, f"{c}: no data"
+    assert all(len(r) == len(rows[0]) for r in rows), f"{c}: ragged rows"
+    for r in rows[1:]:
+        for v in r:
+            assert v.lower() not in ("nan", "inf", "-inf"), f"{c}: {v}"
+readme = open(os.path.join(out, "README.md")).read()
+for p in pngs:
+    assert os.path.basename(p) in readme, f"README.md does not show {p}"
+import re
+assert not re.search(r"\b(nan|inf)\b", readme.lower()), "a NaN or Inf reached the report"
+print(f"figures: {len(pngs)} figures, {len(csvs)} tables, README.md ok")
+PY

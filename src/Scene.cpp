@@ -25,30 +25,20 @@ bool Scene::Intersect(vec3 origin, vec3 direction, Hit& hit, bool withAreaLight)
   return found;
 }
 
-bool Scene::VisibleThroughTransparent(vec3 p, vec3 q) const {
+bool Scene::Blocked(vec3 p, vec3 q, bool glassBlocks) const {
   const vec3 toQ = q - p;
   const double distance = glm::length(toQ);
-  if (distance == 0.0) return true;
+  if (distance == 0.0) return false;  // never normalise a zero-length vector
   const vec3 d = toQ / distance;
   for (const Sphere& s : spheres) {
-    if (!s.GetMaterial().IsTransparent() && s.IntersectAny(p, d, distance)) return false;
+    if ((glassBlocks || !s.GetMaterial().IsTransparent()) && s.IntersectAny(p, d, distance)) {
+      return true;
+    }
   }
   for (const Cube& c : cubes) {
-    if (!c.GetMaterial().IsTransparent() && c.IntersectAny(p, d, distance)) return false;
-  }
-  return true;
-}
-
-bool Scene::Occluded(vec3 p, vec3 q) const {
-  const vec3 toQ = q - p;
-  const double distance = glm::length(toQ);
-  if (distance == 0.0) return false;
-  const vec3 d = toQ / distance;
-  for (const Sphere& s : spheres) {
-    if (s.IntersectAny(p, d, distance)) return true;
-  }
-  for (const Cube& c : cubes) {
-    if (c.IntersectAny(p, d, distance)) return true;
+    if ((glassBlocks || !c.GetMaterial().IsTransparent()) && c.IntersectAny(p, d, distance)) {
+      return true;
+    }
   }
   return false;  // the room is convex: no wall stands between two points inside it
 }

@@ -57,14 +57,14 @@ TEST(Camera, PixelZeroIsTopLeft) {
   EXPECT_GT(d.y, 0.0);  // up
 }
 
-TEST(Camera, SameSeedSameImageForAnyThreadCount) {
-  const Scene scene = testing::CanonicalScene();
-  const WhittedIntegrator integrator(scene, 10);
+// Renders with 1 and with 2 threads; the images must be bit-identical. Returns the image.
+Image ExpectSameForOneAndTwoThreads(const Scene& scene, const Integrator& integrator, int width,
+                                    int height, int spp, std::uint64_t seed) {
   RenderOptions options;
-  options.raysPerPixel = 3;
-  options.seed = 42;
-  Camera one(scene.wall, scene.camera.eye, 40, 30);
-  Camera two(scene.wall, scene.camera.eye, 40, 30);
+  options.raysPerPixel = spp;
+  options.seed = seed;
+  Camera one(scene.wall, scene.camera.eye, width, height);
+  Camera two(scene.wall, scene.camera.eye, width, height);
   options.threads = 1;
   const RenderStats s1 = one.Render(integrator, options);
   options.threads = 2;
@@ -72,16 +72,21 @@ TEST(Camera, SameSeedSameImageForAnyThreadCount) {
   const Image a = one.ToImage();
   const Image b = two.ToImage();
   for (std::size_t i = 0; i < a.Pixels().size(); ++i) {
-    ASSERT_EQ(a.Pixels()[i], b.Pixels()[i]) << "pixel " << i;
+    EXPECT_EQ(a.Pixels()[i], b.Pixels()[i]) << "pixel " << i;
   }
   EXPECT_EQ(s1.TotalRays(), s2.TotalRays());
-  EXPECT_EQ(s1.cameraRays, 40u * 30u * 3u);
+  EXPECT_EQ(s1.shadowRays, s2.shadowRays);
+  EXPECT_EQ(s1.cameraRays, static_cast<std::uint64_t>(width) * height * spp);
+  return a;
+}
+
+TEST(Camera, SameSeedSameImageForAnyThreadCount) {
+  const Scene scene = testing::CanonicalScene();
+  const WhittedIntegrator integrator(scene, 10);
+  const Image a = ExpectSameForOneAndTwoThreads(scene, integrator, 40, 30, 3, 42);
   // A different seed moves the sample points, so the image changes.
-  options.seed = 43;
-  Camera other(scene.wall, scene.camera.eye, 40, 30);
-  other.Render(integrator, options);
+  const Image c = ExpectSameForOneAndTwoThreads(scene, integrator, 40, 30, 3, 43);
   int differing = 0;
-  const Image c = other.ToImage();
   for (std::size_t i = 0; i < a.Pixels().size(); ++i) differing += a.Pixels()[i] != c.Pixels()[i];
   EXPECT_GT(differing, 100);
 }
@@ -91,23 +96,7 @@ TEST(Camera, MonteCarloImageDoesNotDependOnTheThreadCount) {
   MonteCarloOptions o;
   o.walls = MonteCarloOptions::Walls::Diffuse;
   o.branches = 2;
-  const MonteCarloIntegrator integrator(scene, o);
-  RenderOptions options;
-  options.raysPerPixel = 8;
-  options.seed = 7;
-  Camera one(scene.wall, scene.camera.eye, 33, 17);
-  Camera two(scene.wall, scene.camera.eye, 33, 17);
-  options.threads = 1;
-  const RenderStats s1 = one.Render(integrator, options);
-  options.threads = 2;
-  const RenderStats s2 = two.Render(integrator, options);
-  const Image a = one.ToImage();
-  const Image b = two.ToImage();
-  for (std::size_t i = 0; i < a.Pixels().size(); ++i) {
-    ASSERT_EQ(a.Pixels()[i], b.Pixels()[i]) << "pixel " << i;
-  }
-  EXPECT_EQ(s1.TotalRays(), s2.TotalRays());
-  EXPECT_EQ(s1.shadowRays, s2.shadowRays);
+  ExpectSameForOneAndTwoThreads(scene, MonteCarloIntegrator(scene, o), 33, 17, 8, 7);
 }
 
 }  // namespace

@@ -48,13 +48,17 @@ class Scene {
   // Whitted shadow ray from p toward q: blocked by opaque objects only, transparent
   // objects let it through (the design's rule). The room is convex, so no wall can
   // stand between two points inside it.
-  bool VisibleThroughTransparent(vec3 p, vec3 q) const;
+  bool VisibleThroughTransparent(vec3 p, vec3 q) const { return !Blocked(p, q, false); }
 
   // Monte Carlo shadow ray from p toward a point q on the light: blocked by every
   // object, glass included (light through glass arrives only as a caustic).
-  bool Occluded(vec3 p, vec3 q) const;
+  bool Occluded(vec3 p, vec3 q) const { return Blocked(p, q, true); }
 
   const std::string& ObjectName(int object) const;
+
+ private:
+  // Whether an object stands on the segment from p to q; glass counts if glassBlocks.
+  bool Blocked(vec3 p, vec3 q, bool glassBlocks) const;
 };
 
 }  // namespace glint

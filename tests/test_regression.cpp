@@ -54,36 +54,31 @@ void CompareWithReference(const Image& image, const std::string& name, double me
                   << "; wrote " << BinaryPath(name + "-diff.pfm");
 }
 
-TEST(Regression, WhittedCanonical64) {
-  const Scene scene = testing::CanonicalScene();
-  Camera camera(scene.wall, scene.camera.eye, 64, 64);
-  const WhittedIntegrator integrator(scene, scene.whitted.maxDepth);
+// Renders the canonical scene at size x size with seed 1; no sample may be NaN or Inf.
+Image RenderCanonical(const Scene& scene, const Integrator& integrator, int size, int spp) {
+  Camera camera(scene.wall, scene.camera.eye, size, size);
   RenderOptions options;
-  options.raysPerPixel = 4;
+  options.raysPerPixel = spp;
   options.seed = 1;
   const RenderStats stats = camera.Render(integrator, options);
   EXPECT_EQ(stats.nonFiniteSamples, 0u);
-  CompareWithReference(camera.ToImage(), "whitted-cornell-64", 1e-4, 1e-3, 0.005);
+  return camera.ToImage();
 }
 
-}  // namespace
-}  // namespace glint
-
-namespace glint {
-namespace {
+TEST(Regression, WhittedCanonical64) {
+  const Scene scene = testing::CanonicalScene();
+  const WhittedIntegrator integrator(scene, scene.whitted.maxDepth);
+  CompareWithReference(RenderCanonical(scene, integrator, 64, 4), "whitted-cornell-64", 1e-4, 1e-3,
+                       0.005);
+}
 
 TEST(Regression, MonteCarloCanonical32) {
   const Scene scene = testing::CanonicalScene();
-  Camera camera(scene.wall, scene.camera.eye, 32, 32);
   const MonteCarloIntegrator integrator(scene, {});
-  RenderOptions options;
-  options.raysPerPixel = 16;
-  options.seed = 1;
-  const RenderStats stats = camera.Render(integrator, options);
-  EXPECT_EQ(stats.nonFiniteSamples, 0u);
   // Same seed, same image; the tolerance absorbs a few paths that round-off may send
   // another way on another compiler.
-  CompareWithReference(camera.ToImage(), "mc-cornell-32", 2e-3, 1e-2, 0.02);
+  CompareWithReference(RenderCanonical(scene, integrator, 32, 16), "mc-cornell-32", 2e-3, 1e-2,
+                       0.02);
 }
 
 }  // namespace

@@ -29,20 +29,24 @@ int ThreadNumber() {
 }
 }  // namespace
 
+bool Camera::EyeOnAxis(const Wall& room, vec3 eye) {
+  const vec3 back = room.Centre() - vec3(0.0, 0.0, 0.5 * room.Size());
+  const double front = room.Position().z + room.Size();
+  const double tolerance = 1e-9 * std::max(1.0, room.Size());
+  return std::abs(eye.x - back.x) <= tolerance && std::abs(eye.y - back.y) <= tolerance &&
+         eye.z > front;
+}
+
 Camera::Camera(const Wall& room, vec3 eye, int width, int height)
     : eye_(eye), width_(width), height_(height) {
   if (width <= 0 || height <= 0) throw std::invalid_argument("image size must be positive");
-  // The eye lies on the axis through the centre of the back wall, orthogonal to it,
-  // in front of the open side of the room.
-  const vec3 back = room.Centre() - vec3(0.0, 0.0, 0.5 * room.Size());
-  const double front = room.Position().z + room.Size();
-  const double tolerance = 1e-9 * (1.0 + room.Size());
-  if (std::abs(eye.x - back.x) > tolerance || std::abs(eye.y - back.y) > tolerance ||
-      eye.z <= front) {
+  if (!EyeOnAxis(room, eye)) {
     throw std::invalid_argument(
         "the eye must lie on the line through the centre of the back wall, in front of "
         "the room's open side");
   }
+  const vec3 back = room.Centre() - vec3(0.0, 0.0, 0.5 * room.Size());
+  const double front = room.Position().z + room.Size();
   viewDirection_ = glm::normalize(back - eye);
   // The set-up rule: the ray from the eye to a front corner, (c.x +- s/2, c.y +- s/2,
   // front), must pass through the view plane's corner (+-halfWidth, +-halfHeight) at

@@ -1,5 +1,7 @@
 #include "glint/SceneLoader.hpp"
 
+#include "glint/Camera.hpp"
+
 #include <fstream>
 #include <sstream>
 
@@ -283,7 +285,7 @@ Scene SceneFromJson(const nlohmann::json& document, const std::string& file) {
   const vec3 back = scene.wall.Centre() - vec3(0.0, 0.0, 0.5 * scene.wall.Size());
   const double front = scene.wall.Position().z + scene.wall.Size();
   const vec3 eye = scene.camera.eye;
-  if (std::abs(eye.x - back.x) > 1e-9 || std::abs(eye.y - back.y) > 1e-9 || eye.z <= front) {
+  if (!Camera::EyeOnAxis(scene.wall, eye)) {
     camera.Fail("eye",
                 "a point on the axis of the back wall in front of the room, (" +
                     std::to_string(back.x) + ", " + std::to_string(back.y) + ", z > " +

@@ -36,6 +36,10 @@ class Camera {
   // its open side, or the resolution is not positive.
   Camera(const Wall& room, vec3 eye, int width, int height);
 
+  // The first half of the set-up rule: the eye lies on the axis through the centre of
+  // the back wall, orthogonal to it, in front of the room's open side.
+  static bool EyeOnAxis(const Wall& room, vec3 eye);
+
   vec3 Eye() const { return eye_; }
   vec3 ViewDirection() const { return viewDirection_; }
   double ViewPlaneDistance() const { return viewPlaneDistance_; }

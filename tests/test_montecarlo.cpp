@@ -4,6 +4,7 @@
 
 #include <cstdio>
 
+#include "MonteCarloTesting.hpp"
 #include "Statistics.hpp"
 #include "TestScenes.hpp"
 #include "glint/Camera.hpp"
@@ -13,8 +14,11 @@
 namespace glint {
 namespace {
 
+using testing::BlockEstimates;
 using testing::CanonicalScene;
 using testing::MeanAndError;
+using testing::PolygonCosineIntegral;
+using testing::RenderBlocks;
 
 // Radiance along one ray, estimated `n` times.
 MeanAndError EstimateRadiance(const MonteCarloIntegrator& integrator, vec3 start, vec3 d, int n,
@@ -32,19 +36,6 @@ MeanAndError EstimateRadiance(const MonteCarloIntegrator& integrator, vec3 start
     m.Add(integrator.Trace(tree, root, rng, stats)[channel]);
   }
   return m;
-}
-
-// Integral of cos(theta) over the solid angle of a polygon seen from p with normal n
-// (Lambert): 1/2 sum_i angle(u_i, u_i+1) n . normalize(u_i x u_i+1).
-double PolygonCosineIntegral(vec3 p, vec3 n, const std::vector<vec3>& vertices) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i < vertices.size(); ++i) {
-    const vec3 a = glm::normalize(vertices[i] - p);
-    const vec3 b = glm::normalize(vertices[(i + 1) % vertices.size()] - p);
-    sum += std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)) *
-           glm::dot(n, glm::normalize(glm::cross(a, b)));
-  }
-  return 0.5 * std::abs(sum);
 }
 
 TEST(MonteCarlo, UnoccludedWallRadianceMatchesLambertsFormula) {
@@ -147,41 +138,6 @@ TEST(MonteCarlo, TerminalCeilingIsBlackTheLightIsLeAndDiffuseWallsLightTheCeilin
   const MeanAndError le = EstimateRadiance(terminal, eye, vec3(0.5, 1.0, 0.5) - eye, 10, 1, 1);
   EXPECT_EQ(le.mean, 50.0);
   EXPECT_EQ(le.StandardError(), 0.0);
-}
-
-// Block means of `runs` independent renders (different seeds) of a small image.
-struct BlockEstimates {
-  std::vector<MeanAndError> blocks;  // block-major, 3 channels each
-};
-
-BlockEstimates RenderBlocks(const Scene& scene, MonteCarloOptions options, int size, int block,
-                            int spp, int runs, std::uint64_t seedBase) {
-  const MonteCarloIntegrator integrator(scene, options);
-  const int nb = size / block;
-  BlockEstimates out;
-  out.blocks.resize(static_cast<std::size_t>(nb * nb * 3));
-  for (int r = 0; r < runs; ++r) {
-    Camera camera(scene.wall, scene.camera.eye, size, size);
-    RenderOptions ro;
-    ro.raysPerPixel = spp;
-    ro.seed = seedBase + static_cast<std::uint64_t>(r);
-    const RenderStats stats = camera.Render(integrator, ro);
-    EXPECT_EQ(stats.nonFiniteSamples, 0u);
-    for (int by = 0; by < nb; ++by) {
-      for (int bx = 0; bx < nb; ++bx) {
-        Colour sum(0.0);
-        for (int y = by * block; y < (by + 1) * block; ++y) {
-          for (int x = bx * block; x < (bx + 1) * block; ++x)
-            sum += camera.PixelAt(x, y).Radiance();
-        }
-        for (int k = 0; k < 3; ++k) {
-          out.blocks[static_cast<std::size_t>((by * nb + bx) * 3 + k)].Add(sum[k] /
-                                                                           (block * block));
-        }
-      }
-    }
-  }
-  return out;
 }
 
 TEST(MonteCarlo, LightBrdfAndMisSamplingAgreeBlockByBlock) {

@@ -3,6 +3,7 @@
 // acne, and NaN/Inf in every mode. Each test pins down the right answer.
 #include <gtest/gtest.h>
 
+#include "MonteCarloTesting.hpp"
 #include "Statistics.hpp"
 #include "TestScenes.hpp"
 #include "glint/Camera.hpp"
@@ -83,29 +84,11 @@ TEST(Stability, GlassOfIndexOneLeavesTheWhittedImageUnchanged) {
   EXPECT_GT(untouched, 3000);  // most of the 4096 pixels never meet O2
 }
 
-// Block means of `runs` independent renders.
-std::vector<MeanAndError> Blocks(const Scene& scene, const MonteCarloOptions& o, int runs,
-                                 std::uint64_t seed) {
-  const MonteCarloIntegrator integrator(scene, o);
-  std::vector<MeanAndError> blocks(16 * 3);
-  for (int r = 0; r < runs; ++r) {
-    const Image image = RenderImage(scene, integrator, 32, 32, seed + r);
-    for (int b = 0; b < 16; ++b) {
-      Colour sum(0.0);
-      for (int y = (b / 4) * 8; y < (b / 4 + 1) * 8; ++y) {
-        for (int x = (b % 4) * 8; x < (b % 4 + 1) * 8; ++x) sum += image.At(x, y);
-      }
-      for (int k = 0; k < 3; ++k) blocks[static_cast<std::size_t>(b * 3 + k)].Add(sum[k] / 64.0);
-    }
-  }
-  return blocks;
-}
-
 TEST(Stability, HugePhongExponentConvergesToTheMirror) {
   const Scene phong = CanonicalScene({"/objects/0/exponent=1e5", "/objects/2/exponent=1e5"});
   const Scene mirror = LoadScene(testing::SourcePath("scenes/cornell-mirror.json"));
-  const std::vector<MeanAndError> a = Blocks(phong, {}, 8, 10);
-  const std::vector<MeanAndError> b = Blocks(mirror, {}, 8, 20);
+  const std::vector<MeanAndError> a = testing::RenderBlocks(phong, {}, 32, 8, 32, 8, 10).blocks;
+  const std::vector<MeanAndError> b = testing::RenderBlocks(mirror, {}, 32, 8, 32, 8, 20).blocks;
   for (std::size_t i = 0; i < a.size(); ++i) {
     const double se = std::hypot(a[i].StandardError(), b[i].StandardError());
     EXPECT_LE(std::abs(a[i].mean - b[i].mean), 4.0 * se + 1e-3 * b[i].mean)
@@ -323,19 +306,14 @@ TEST(Stability, NoShadowAcneOnAnUnoccludedPatch) {
   // value: |z| < 4.5 (a Sidak bound for 400 points at level 0.01 is 4.05).
   const MonteCarloIntegrator mc(scene, {});
   const Rectangle& l = scene.light->Shape();
+  const std::vector<vec3> corners = {l.PointFromUV(0, 0), l.PointFromUV(1, 0), l.PointFromUV(1, 1),
+                                     l.PointFromUV(0, 1)};
   double worst = 0.0;
   for (int i = 0; i < 20; ++i) {
     for (int j = 0; j < 20; ++j) {
       const vec3 p(0.30 + 0.15 * i / 19.0, 0.0, 0.62 + 0.28 * j / 19.0);
-      double sum = 0.0;
-      const vec3 corners[4] = {l.PointFromUV(0, 0), l.PointFromUV(1, 0), l.PointFromUV(1, 1),
-                               l.PointFromUV(0, 1)};
-      for (int k = 0; k < 4; ++k) {
-        const vec3 a = glm::normalize(corners[k] - p);
-        const vec3 b = glm::normalize(corners[(k + 1) % 4] - p);
-        sum += std::acos(glm::dot(a, b)) * glm::normalize(glm::cross(a, b)).y;
-      }
-      const double expected = 0.75 * kInvPi * 50.0 * 0.5 * std::abs(sum);
+      const double expected =
+          0.75 * kInvPi * 50.0 * testing::PolygonCosineIntegral(p, vec3(0, 1, 0), corners);
       MeanAndError m;
       const vec3 from = p + vec3(0.0, 0.05, 0.05);
       for (int n = 0; n < 2000; ++n) m.Add(TraceOnce(mc, from, p - from, rng, tree, stats).x);

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "BenchCommand.hpp"
 #include "Converge.hpp"
 #include "Interrupt.hpp"
 #include "RenderJob.hpp"
@@ -192,6 +193,34 @@ int RunCli(int argc, char** argv) {
   treeCommand->add_option("--max-nodes", tree.maxNodes, "Draw at most this many nodes")
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
+  BenchArgs bench;
+  CLI::App* benchCommand = app.add_subcommand(
+      "bench",
+      "Throughput of a scene in both modes at one or more thread counts: camera paths/s, "
+      "rays/s (all kinds) and rays/s per thread, speedup, peak memory (see BENCHMARKS.md)");
+  benchCommand->footer(kExitCodes);
+  benchCommand->add_option("scene", bench.scene, "Scene file (JSON)")->capture_default_str();
+  benchCommand->add_option("--size", bench.size, "Image size, N or WxH")->capture_default_str();
+  benchCommand->add_option("--threads", bench.threads, "Thread counts to measure, e.g. 1,2")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 4096))
+      ->capture_default_str();
+  benchCommand->add_option("--mc-spp", bench.mcSpp, "Rays per pixel in Monte Carlo mode")
+      ->check(CLI::Range(1, 1 << 20))
+      ->capture_default_str();
+  benchCommand
+      ->add_option("--whitted-spp", bench.whittedSpp,
+                   "Rays per pixel in Whitted mode; default: the scene's value")
+      ->check(CLI::Range(1, 1 << 20));
+  benchCommand->add_option("--modes", bench.modes, "Modes to measure: mc, whitted or both")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"whitted", "mc"}))
+      ->capture_default_str();
+  benchCommand->add_option("--repeat", bench.repeat, "Timed runs per row; the best one counts")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  benchCommand->add_option("--json", bench.json, "Also write the table as JSON to this file");
+
   conv->add_option("--csv", converge.csv, "CSV of the measurements")->capture_default_str();
   conv->add_option(
           "--chart", converge.chart,
@@ -224,6 +253,7 @@ int RunCli(int argc, char** argv) {
     if (*render) return Render(args);
     if (*conv) return RunConverge(converge);
     if (*treeCommand) return RunTree(tree);
+    if (*benchCommand) return RunBench(bench);
   } catch (const InputError& e) {
     std::fprintf(stderr, "glint: %s\n", e.what());
     return kExitBadInput;

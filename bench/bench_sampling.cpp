@@ -1,0 +1,89 @@
+// The sampling routines of Monte Carlo mode: the random generator, the Phong lobe and
+// its BRDF and density, cosine sampling, and light sampling from the first hits.
+#include <benchmark/benchmark.h>
+
+#include "RaySets.hpp"
+#include "glint/Phong.hpp"
+
+namespace glint::bench {
+namespace {
+
+void RngUniform(benchmark::State& state) {
+  Pcg32 rng(1, 1);
+  double sum = 0.0;
+  for (auto _ : state) {
+    sum += rng.Uniform();
+    benchmark::DoNotOptimize(sum);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(RngUniform);
+
+void RngForPixel(benchmark::State& state) {
+  std::uint64_t pixel = 0;
+  for (auto _ : state) {
+    Pcg32 rng = Pcg32::ForPixel(1, pixel++, 0);
+    benchmark::DoNotOptimize(rng);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(RngForPixel);
+
+const Material& O1() {
+  return CanonicalScene().spheres[0].GetMaterial();
+}  // Phong n = 100
+
+void SamplePhongLobe(benchmark::State& state) {
+  Pcg32 rng(1, 1);
+  const vec3 n(0.0, 1.0, 0.0);
+  const vec3 d = glm::normalize(vec3(0.3, -1.0, -0.2));
+  for (auto _ : state) {
+    const PhongSample s = SamplePhong(O1(), d, n, rng.Uniform(), rng.Uniform());
+    benchmark::DoNotOptimize(s);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(SamplePhongLobe);
+
+void PhongBrdfAndPdf(benchmark::State& state) {
+  Pcg32 rng(1, 1);
+  const vec3 n(0.0, 1.0, 0.0);
+  const vec3 d = glm::normalize(vec3(0.3, -1.0, -0.2));
+  for (auto _ : state) {
+    const vec3 psi = Frame::FromZ(n).ToWorld(SampleCosineHemisphere(rng.Uniform(), rng.Uniform()));
+    benchmark::DoNotOptimize(PhongBrdf(O1(), d, n, psi));
+    benchmark::DoNotOptimize(PhongPdf(O1(), d, n, psi));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(PhongBrdfAndPdf);
+
+void CosineHemisphere(benchmark::State& state) {
+  Pcg32 rng(1, 1);
+  const Frame frame = Frame::FromZ(glm::normalize(vec3(0.2, 0.9, 0.1)));
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(frame.ToWorld(SampleCosineHemisphere(rng.Uniform(), rng.Uniform())));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(CosineHemisphere);
+
+void LightSampleLi(benchmark::State& state) {
+  const Light& light = *CanonicalScene().light;
+  const RaySet& points = []() -> const RaySet& {
+    static const RaySet set = ShadowRays(CanonicalScene());
+    return set;
+  }();
+  Pcg32 rng(1, 1);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const LightSample s = light.SampleLi(points.origins[i], rng.Uniform(), rng.Uniform());
+    benchmark::DoNotOptimize(s);
+    i = i + 1 == points.Size() ? 0 : i + 1;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(LightSampleLi);
+
+}  // namespace
+}  // namespace glint::bench

@@ -1,0 +1,111 @@
+#include "BenchCommand.hpp"
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "Cli.hpp"
+#include "glint/ImageIO.hpp"
+#include "nlohmann/json.hpp"
+
+namespace glint {
+
+namespace {
+
+struct Row {
+  std::string mode;
+  int spp = 0;
+  int threads = 0;
+  double seconds = 0.0;  // the best of the runs
+  RenderStats stats;
+};
+
+double PeakRssMiB() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+// The best of `repeat` timed renders of one pass (the camera is warmed up first, so
+// that the per-thread arenas exist before the clock starts).
+Row Measure(const BenchArgs& args, const std::string& mode, int threads) {
+  RenderArgs r;
+  r.scene = args.scene;
+  r.mode = mode;
+  r.size = args.size;
+  r.threads = threads;
+  r.spp = mode == "mc" ? args.mcSpp : args.whittedSpp;
+  const RenderSetup s = Prepare(r, false);
+  Camera camera(s.scene.wall, s.scene.camera.eye, s.width, s.height);
+  const std::unique_ptr<Integrator> integrator = MakeIntegrator(r, s);
+  RenderOptions options;
+  options.threads = threads;
+  options.raysPerPixel = 1;
+  camera.Render(*integrator, options);  // warm-up: arenas, caches, page faults
+  options.raysPerPixel = s.raysPerPass;
+  Row row{mode, s.raysPerPass, threads, 0.0, {}};
+  for (int i = 0; i < args.repeat; ++i) {
+    camera.Clear();
+    const auto start = std::chrono::steady_clock::now();
+    const RenderStats stats = camera.Render(*integrator, options);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (i == 0 || seconds < row.seconds) {
+      row.seconds = seconds;
+      row.stats = stats;
+    }
+  }
+  return row;
+}
+
+std::string ToJson(const BenchArgs& args, const std::vector<Row>& rows) {
+  nlohmann::json j;
+  j["scene"] = args.scene;
+  j["size"] = args.size;
+  j["repeat"] = args.repeat;
+  j["peak_rss_mib"] = PeakRssMiB();
+  for (const Row& row : rows) {
+    const double rays = static_cast<double>(row.stats.TotalRays());
+    j["runs"].push_back({{"mode", row.mode},
+                         {"spp", row.spp},
+                         {"threads", row.threads},
+                         {"seconds", row.seconds},
+                         {"rays", row.stats.TotalRays()},
+                         {"camera_paths", row.stats.cameraRays},
+                         {"mrays_per_second", rays / row.seconds / 1e6},
+                         {"mrays_per_second_per_thread", rays / row.seconds / 1e6 / row.threads}});
+  }
+  return j.dump(2) + "\n";
+}
+
+}  // namespace
+
+int RunBench(const BenchArgs& args) {
+  if (!args.json.empty()) CheckWritable(args.json);
+  const bool square = args.size.find_first_of("xX") == std::string::npos;
+  std::printf("glint bench: %s, %s%s%s pixels, best of %d run%s, seed 1\n", args.scene.c_str(),
+              args.size.c_str(), square ? "x" : "", square ? args.size.c_str() : "", args.repeat,
+              args.repeat == 1 ? "" : "s");
+  std::printf("%-8s %5s %7s %9s %11s %9s %14s %8s\n", "mode", "spp", "threads", "seconds",
+              "Mpaths/s", "Mrays/s", "Mrays/s/thread", "speedup");
+  std::vector<Row> rows;
+  for (const std::string& mode : args.modes) {
+    double first = 0.0;
+    for (const int threads : args.threads) {
+      const Row row = Measure(args, mode, threads);
+      if (first == 0.0) first = row.seconds;  // speedups are relative to the first count
+      const double rays = static_cast<double>(row.stats.TotalRays()) / row.seconds / 1e6;
+      std::printf("%-8s %5d %7d %9.3f %11.2f %9.2f %14.2f %8.2f\n", mode.c_str(), row.spp, threads,
+                  row.seconds, static_cast<double>(row.stats.cameraRays) / row.seconds / 1e6, rays,
+                  rays / threads, first / row.seconds);
+      std::fflush(stdout);
+      rows.push_back(row);
+    }
+  }
+  std::printf("peak memory (resident): %.1f MiB\n", PeakRssMiB());
+  if (!args.json.empty()) WriteFileAtomically(args.json, ToJson(args, rows));
+  return kExitOk;
+}
+
+}  // namespace glint

@@ -83,6 +83,12 @@ std::string ToJson(const BenchArgs& args, const std::vector<Row>& rows) {
 
 int RunBench(const BenchArgs& args) {
   if (!args.json.empty()) CheckWritable(args.json);
+  {  // a bad scene or size fails here, before the table starts
+    RenderArgs check;
+    check.scene = args.scene;
+    check.size = args.size;
+    Prepare(check, false);
+  }
   const bool square = args.size.find_first_of("xX") == std::string::npos;
   std::printf("glint bench: %s, %s%s%s pixels, best of %d run%s, seed 1\n", args.scene.c_str(),
               args.size.c_str(), square ? "x" : "", square ? args.size.c_str() : "", args.repeat,

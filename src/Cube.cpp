@@ -3,9 +3,18 @@
 namespace glint {
 
 Cube::Cube(vec3 position, double size, const Material& material, int object)
-    : position_(position), size_(size), material_(material), object_(object) {
+    : position_(position),
+      maxCorner_(position + vec3(size)),
+      centre_(position + vec3(0.5 * size)),
+      // sqrt(3)/2 size, enlarged by a relative 1e-9 so that round-off in the test can
+      // never reject a ray that touches a corner.
+      boundRadius2_(0.75 * size * size * (1.0 + 1e-9)),
+      boundRadius_(std::sqrt(boundRadius2_)),
+      size_(size),
+      material_(material),
+      object_(object) {
   const vec3 p = position;
-  const vec3 q = position + vec3(size);
+  const vec3 q = maxCorner_;
   const vec3 ex(size, 0.0, 0.0);
   const vec3 ey(0.0, size, 0.0);
   const vec3 ez(0.0, 0.0, size);
@@ -19,32 +28,20 @@ Cube::Cube(vec3 position, double size, const Material& material, int object)
 }
 
 bool Cube::Intersect(vec3 origin, vec3 direction, double tMax, Hit& hit) const {
-  int best = -1;
-  double bestT = tMax;
-  for (int i = 0; i < 6; ++i) {
-    double t = 0.0;
-    if (faces_[i].Intersect(origin, direction, bestT, t)) {
-      bestT = t;
-      best = i;
-    }
-  }
-  if (best < 0) return false;
-  const Rectangle& face = faces_[best];
-  hit.t = bestT;
-  hit.point = face.PointAt(origin, direction, bestT);
-  hit.normal = face.Normal();
-  hit.material = &material_;
-  hit.object = object_;
-  hit.light = false;
+  double t = tMax;
+  int face = 0;
+  if (!Nearer(origin, direction, t, face)) return false;
+  FillHit(origin, direction, t, face, hit);
   return true;
 }
 
-bool Cube::IntersectAny(vec3 origin, vec3 direction, double tMax) const {
-  double t = 0.0;
-  for (const Rectangle& face : faces_) {
-    if (face.Intersect(origin, direction, tMax, t)) return true;
-  }
-  return false;
+void Cube::FillHit(vec3 origin, vec3 direction, double t, int face, Hit& hit) const {
+  hit.t = t;
+  hit.point = PointOnSlabFace(origin, direction, t, face, position_, maxCorner_);
+  hit.normal = faces_[face].Normal();
+  hit.material = &material_;
+  hit.object = object_;
+  hit.light = false;
 }
 
 }  // namespace glint

@@ -3,26 +3,53 @@
 namespace glint {
 
 bool Scene::Intersect(vec3 origin, vec3 direction, Hit& hit, bool withAreaLight) const {
-  hit = Hit{};
-  bool found = wall.Intersect(origin, direction, kInfinity, hit);
-  for (const Sphere& s : spheres) found |= s.Intersect(origin, direction, hit.t, hit);
-  for (const Cube& c : cubes) found |= c.Intersect(origin, direction, hit.t, hit);
+  // Distances first, the hit record once for the winner: most candidates lose.
+  enum class Winner { None, Wall, Sphere, Cube, Light };
+  Winner winner = Winner::None;
+  double t = kInfinity;
+  int index = 0;
+  int face = 0;
+  if (wall.Nearer(origin, direction, t, face)) winner = Winner::Wall;
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    if (spheres[i].Nearer(origin, direction, t)) {
+      winner = Winner::Sphere;
+      index = static_cast<int>(i);
+    }
+  }
+  for (std::size_t i = 0; i < cubes.size(); ++i) {
+    if (cubes[i].Nearer(origin, direction, t, face)) {
+      winner = Winner::Cube;
+      index = static_cast<int>(i);
+    }
+  }
   if (withAreaLight && light) {
     // The light is coplanar with the ceiling: on a tie (equal t up to round-off) the
     // light wins, so the allowance scales with t.
-    const double tMax = found ? hit.t * (1.0 + 1e-12) + 1e-15 : kInfinity;
-    double t = 0.0;
-    if (light->Shape().Intersect(origin, direction, tMax, t)) {
+    const double tMax = winner != Winner::None ? t * (1.0 + 1e-12) + 1e-15 : kInfinity;
+    if (light->Shape().Intersect(origin, direction, tMax, t)) winner = Winner::Light;
+  }
+  hit = Hit{};
+  switch (winner) {
+    case Winner::None:
+      return false;
+    case Winner::Wall:
+      wall.FillHit(origin, direction, t, face, hit);
+      break;
+    case Winner::Sphere:
+      spheres[static_cast<std::size_t>(index)].FillHit(origin, direction, t, hit);
+      break;
+    case Winner::Cube:
+      cubes[static_cast<std::size_t>(index)].FillHit(origin, direction, t, face, hit);
+      break;
+    case Winner::Light:
       hit.t = t;
       hit.point = light->Shape().PointAt(origin, direction, t);
       hit.normal = light->Normal();
-      hit.material = nullptr;
       hit.object = light->Object();
       hit.light = true;
-      found = true;
-    }
+      break;
   }
-  return found;
+  return true;
 }
 
 bool Scene::Blocked(vec3 p, vec3 q, bool glassBlocks) const {

@@ -4,7 +4,11 @@ namespace glint {
 
 Wall::Wall(vec3 position, double size, const std::array<Material, kSides>& materials,
            int firstObject)
-    : position_(position), size_(size), materials_(materials), firstObject_(firstObject) {
+    : position_(position),
+      maxCorner_(position + vec3(size)),
+      size_(size),
+      materials_(materials),
+      firstObject_(firstObject) {
   const vec3 p = position;
   const vec3 q = position + vec3(size);
   const vec3 ex(size, 0.0, 0.0);
@@ -19,29 +23,22 @@ Wall::Wall(vec3 position, double size, const std::array<Material, kSides>& mater
 }
 
 bool Wall::Intersect(vec3 origin, vec3 direction, double tMax, Hit& hit) const {
-  int best = -1;
-  double bestT = tMax;
-  for (int i = 0; i < kSides; ++i) {
-    double t = 0.0;
-    if (faces_[i].Intersect(origin, direction, bestT, t)) {
-      bestT = t;
-      best = i;
-    }
-  }
-  if (best < 0) return false;
-  hit.t = bestT;
-  hit.point = faces_[best].PointAt(origin, direction, bestT);
-  hit.normal = faces_[best].Normal();
-  hit.material = &materials_[best];
-  hit.object = firstObject_ + best;
-  hit.light = false;
+  double t = tMax;
+  int side = 0;
+  if (!Nearer(origin, direction, t, side)) return false;
+  FillHit(origin, direction, t, side, hit);
   return true;
 }
 
-bool Wall::Contains(vec3 p, double tolerance) const {
-  const vec3 lo = position_ - vec3(tolerance);
-  const vec3 hi = position_ + vec3(size_ + tolerance);
-  return p.x >= lo.x && p.y >= lo.y && p.z >= lo.z && p.x <= hi.x && p.y <= hi.y && p.z <= hi.z;
+void Wall::FillHit(vec3 origin, vec3 direction, double t, int side, Hit& hit) const {
+  // The side's plane: its axis and whether it is the box's min or max face.
+  static constexpr std::array<int, kSides> kFaceOfSide = {0, 3, 1, 2, 4};
+  hit.t = t;
+  hit.point = PointOnSlabFace(origin, direction, t, kFaceOfSide[side], position_, maxCorner_);
+  hit.normal = faces_[side].Normal();
+  hit.material = &materials_[side];
+  hit.object = firstObject_ + side;
+  hit.light = false;
 }
 
 }  // namespace glint

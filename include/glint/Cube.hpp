@@ -1,5 +1,6 @@
 // An axis-aligned cube of six Rectangles from Position (its minimum corner) and Size,
 // with outward normals: O3 of the canonical scene. It may be opaque or transparent.
+// Its faces lie on the planes of a box, so rays meet it by the slab test.
 #pragma once
 
 #include <array>
@@ -7,6 +8,7 @@
 #include "glint/Hit.hpp"
 #include "glint/Material.hpp"
 #include "glint/Rectangle.hpp"
+#include "glint/Slabs.hpp"
 
 namespace glint {
 
@@ -17,18 +19,64 @@ class Cube {
   bool Intersect(vec3 origin, vec3 direction, double tMax, Hit& hit) const;
   bool IntersectAny(vec3 origin, vec3 direction, double tMax) const;
 
+  // The two halves of Intersect, for the scene's closest-hit loop: Nearer lowers t to
+  // the cube's hit distance if that is in (0, t) and says which face it is on; FillHit
+  // then records the hit.
+  bool Nearer(vec3 origin, vec3 direction, double& t, int& face) const;
+  void FillHit(vec3 origin, vec3 direction, double t, int face, Hit& hit) const;
+
   vec3 Position() const { return position_; }
   double Size() const { return size_; }
   const Material& GetMaterial() const { return material_; }
   int Object() const { return object_; }
+  // In IntersectSlabs' order: -x, +x, -y, +y, -z, +z.
   const std::array<Rectangle, 6>& Faces() const { return faces_; }
 
  private:
-  vec3 position_;
+  // An early-out for the many rays that pass far from the cube.
+  bool MissesBound(vec3 origin, vec3 direction, double tMax) const;
+
+  vec3 position_;  // minimum corner
+  vec3 maxCorner_;
+  vec3 centre_;
+  double boundRadius2_;  // squared radius of the circumscribed sphere, a little enlarged
+  double boundRadius_;
   double size_;
   Material material_;
   int object_;
   std::array<Rectangle, 6> faces_;
 };
+
+// Inline: these run for every ray.
+
+inline bool Cube::MissesBound(vec3 origin, vec3 direction, double tMax) const {
+  // The ray's line passes farther than the bounding radius from the centre, or the
+  // sphere lies wholly behind the origin or beyond tMax: no division needed to say so.
+  const vec3 f = origin - centre_;
+  const double b = glm::dot(f, direction);
+  const vec3 perpendicular = f - b * direction;
+  if (glm::dot(perpendicular, perpendicular) > boundRadius2_) return true;
+  const double r = boundRadius_;
+  return -b + r < 0.0 || -b - r > tMax;
+}
+
+inline bool Cube::Nearer(vec3 origin, vec3 direction, double& t, int& face) const {
+  if (MissesBound(origin, direction, t)) return false;
+  const SlabCrossing c = IntersectSlabs(origin, direction, position_, maxCorner_);
+  if (!c.hit) return false;
+  // From outside the first face is the entry; from inside (a glass cube) the exit.
+  const bool entering = c.tNear > 0.0;
+  const double tHit = entering ? c.tNear : c.tFar;
+  if (!(tHit > 0.0 && tHit < t)) return false;
+  t = tHit;
+  face = entering ? c.nearFace : c.farFace;
+  return true;
+}
+
+inline bool Cube::IntersectAny(vec3 origin, vec3 direction, double tMax) const {
+  if (MissesBound(origin, direction, tMax)) return false;
+  const SlabCrossing c = IntersectSlabs(origin, direction, position_, maxCorner_);
+  return c.hit && ((c.tNear > 0.0 && c.tNear < tMax) || (c.tFar > 0.0 && c.tFar < tMax));
+}
 
 }  // namespace glint

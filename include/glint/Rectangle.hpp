@@ -40,4 +40,27 @@ class Rectangle {
   double area_ = 1.0;
 };
 
+inline bool Rectangle::Intersect(vec3 origin, vec3 direction, double tMax, double& t) const {
+  // Closed boundaries with this tolerance in (u, v): a ray along a shared edge of two
+  // faces must hit one of them even when round-off puts it a hair outside both.
+  constexpr double kEdgeTolerance = 1e-12;
+  const double denom = glm::dot(direction, normal_);
+  if (denom == 0.0) return false;  // parallel: a ray in the plane sees no area
+  const double distance = glm::dot(corner_ - origin, normal_);
+  // t = distance / denom > 0 needs equal signs: most rays that go away from the plane
+  // are turned back before the division.
+  if ((distance > 0.0) != (denom > 0.0)) return false;
+  const double tHit = distance / denom;
+  if (!(tHit > 0.0 && tHit < tMax)) return false;
+  const vec3 q = origin + tHit * direction - corner_;
+  const double u = glm::dot(q, invA_);
+  const double v = glm::dot(q, invB_);
+  if (u < -kEdgeTolerance || u > 1.0 + kEdgeTolerance || v < -kEdgeTolerance ||
+      v > 1.0 + kEdgeTolerance) {
+    return false;
+  }
+  t = tHit;
+  return true;
+}
+
 }  // namespace glint

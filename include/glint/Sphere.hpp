@@ -17,6 +17,11 @@ class Sphere {
   // Any hit with t in (0, tMax): for shadow rays.
   bool IntersectAny(vec3 origin, vec3 direction, double tMax) const;
 
+  // The two halves of Intersect, for the scene's closest-hit loop: Nearer lowers t to
+  // this sphere's hit distance if that is in (0, t); FillHit then records the hit.
+  bool Nearer(vec3 origin, vec3 direction, double& t) const;
+  void FillHit(vec3 origin, vec3 direction, double t, Hit& hit) const;
+
   vec3 Centre() const { return centre_; }
   double Radius() const { return radius_; }
   const Material& GetMaterial() const { return material_; }
@@ -31,5 +36,46 @@ class Sphere {
   Material material_;
   int object_;
 };
+
+// Inline: these run for every ray and every sphere.
+
+inline bool Sphere::Roots(vec3 origin, vec3 direction, double& t0, double& t1) const {
+  // |f + t d|^2 = r^2 with f = o - c and |d| = 1: t^2 + 2 b t + c = 0, b = f.d.
+  // The discriminant is computed as r^2 - |f - b d|^2, which keeps its precision for a
+  // far origin (pbrt-v4, "Ray Tracing Gems" ch. 7).
+  const vec3 f = origin - centre_;
+  const double b = glm::dot(f, direction);
+  const vec3 perpendicular = f - b * direction;
+  const double discriminant = radius_ * radius_ - glm::dot(perpendicular, perpendicular);
+  if (discriminant < 0.0) return false;
+  const double c = glm::dot(f, f) - radius_ * radius_;
+  // Stable roots: q = -(b + sign(b) sqrt(disc)), t0 = q, t1 = c / q.
+  const double q = -(b + std::copysign(std::sqrt(discriminant), b));
+  if (q == 0.0) {  // origin at the centre's tangent point with b = 0 and disc = 0
+    t0 = t1 = 0.0;
+    return true;
+  }
+  t0 = q;
+  t1 = c / q;
+  if (t0 > t1) std::swap(t0, t1);
+  return true;
+}
+
+inline bool Sphere::Nearer(vec3 origin, vec3 direction, double& t) const {
+  double t0 = 0.0;
+  double t1 = 0.0;
+  if (!Roots(origin, direction, t0, t1)) return false;
+  const double nearest = t0 > 0.0 ? t0 : t1;
+  if (!(nearest > 0.0 && nearest < t)) return false;
+  t = nearest;
+  return true;
+}
+
+inline bool Sphere::IntersectAny(vec3 origin, vec3 direction, double tMax) const {
+  double t0 = 0.0;
+  double t1 = 0.0;
+  if (!Roots(origin, direction, t0, t1)) return false;
+  return (t0 > 0.0 && t0 < tMax) || (t1 > 0.0 && t1 < tMax);
+}
 
 }  // namespace glint

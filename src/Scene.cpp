@@ -28,9 +28,9 @@ bool Scene::Intersect(vec3 origin, vec3 direction, Hit& hit, bool withAreaLight)
     const double tMax = winner != Winner::None ? t * (1.0 + 1e-12) + 1e-15 : kInfinity;
     if (light->Shape().Intersect(origin, direction, tMax, t)) winner = Winner::Light;
   }
-  hit = Hit{};
   switch (winner) {
     case Winner::None:
+      hit = Hit{};
       return false;
     case Winner::Wall:
       wall.FillHit(origin, direction, t, face, hit);
@@ -45,6 +45,7 @@ bool Scene::Intersect(vec3 origin, vec3 direction, Hit& hit, bool withAreaLight)
       hit.t = t;
       hit.point = light->Shape().PointAt(origin, direction, t);
       hit.normal = light->Normal();
+      hit.material = nullptr;
       hit.object = light->Object();
       hit.light = true;
       break;
@@ -52,11 +53,8 @@ bool Scene::Intersect(vec3 origin, vec3 direction, Hit& hit, bool withAreaLight)
   return true;
 }
 
-bool Scene::Blocked(vec3 p, vec3 q, bool glassBlocks) const {
-  const vec3 toQ = q - p;
-  const double distance = glm::length(toQ);
-  if (distance == 0.0) return false;  // never normalise a zero-length vector
-  const vec3 d = toQ / distance;
+bool Scene::Blocked(vec3 p, vec3 d, double distance, bool glassBlocks) const {
+  if (!(distance > 0.0)) return false;  // (its direction may be NaN: never looked at)
   for (const Sphere& s : spheres) {
     if ((glassBlocks || !s.GetMaterial().IsTransparent()) && s.IntersectAny(p, d, distance)) {
       return true;

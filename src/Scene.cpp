@@ -53,15 +53,15 @@ bool Scene::Intersect(vec3 origin, vec3 direction, Hit& hit, bool withAreaLight)
   return true;
 }
 
-bool Scene::Blocked(vec3 p, vec3 d, double distance, bool glassBlocks) const {
-  if (!(distance > 0.0)) return false;  // (its direction may be NaN: never looked at)
+bool Scene::Blocked(vec3 p, vec3 q, bool glassBlocks) const {
+  const vec3 v = q - p;
   for (const Sphere& s : spheres) {
-    if ((glassBlocks || !s.GetMaterial().IsTransparent()) && s.IntersectAny(p, d, distance)) {
+    if ((glassBlocks || !s.GetMaterial().IsTransparent()) && s.IntersectsSegment(p, v)) {
       return true;
     }
   }
   for (const Cube& c : cubes) {
-    if ((glassBlocks || !c.GetMaterial().IsTransparent()) && c.IntersectAny(p, d, distance)) {
+    if ((glassBlocks || !c.GetMaterial().IsTransparent()) && c.IntersectsSegment(p, v)) {
       return true;
     }
   }

@@ -20,12 +20,13 @@ Colour WhittedIntegrator::LocalLight(const Hit& hit, vec3 d, RenderStats& stats)
   for (const PointLight& light : scene_.pointLights) {
     vec3 l = light.position - hit.point;
     const double r2 = glm::dot(l, l);
-    const double r = std::sqrt(r2);
-    l /= r;
+    l /= std::sqrt(r2);
     const double cosTheta = glm::dot(n, l);
     if (cosTheta <= 0.0) continue;
     ++stats.shadowRays;
-    if (!scene_.VisibleThroughTransparent(OffsetRayOrigin(hit.point, n, l), l, r)) continue;
+    if (!scene_.VisibleThroughTransparent(OffsetRayOrigin(hit.point, n, l), light.position)) {
+      continue;
+    }
     const Colour irradiance = light.intensity * (cosTheta / r2);  // E = I cos(theta) / r^2
     double brdf = m.whittedDiffuse * kInvPi;
     if (m.whittedSpecular > 0.0) {

@@ -8,6 +8,7 @@
 
 #include "glint/Cube.hpp"
 #include "glint/Rng.hpp"
+#include "glint/Sphere.hpp"
 #include "glint/Wall.hpp"
 
 namespace glint {
@@ -110,7 +111,34 @@ TEST(Slabs, CubeAnyHitAgreesWithClosestHit) {
     const double tMax = 0.6 * rng.Uniform();
     Hit hit;
     ASSERT_EQ(cube.IntersectAny(o, d, tMax), cube.Intersect(o, d, tMax, hit));
+    // The shadow-ray form takes the segment's end instead of a unit direction.
+    const bool segment = cube.IntersectsSegment(o, tMax * d);
+    const bool closeToAnEnd =
+        cube.Intersect(o, d, kInfinity, hit) && std::abs(hit.t - tMax) < 1e-12;
+    if (!closeToAnEnd) {
+      ASSERT_EQ(segment, cube.IntersectAny(o, d, tMax));
+    }
   }
+}
+
+TEST(Slabs, SphereSegmentTestAgreesWithTheRayTest) {
+  const Sphere sphere(vec3(0.22, 0.18, 0.40), 0.18, Material{}, 0);
+  Pcg32 rng(6, 6);
+  int blocked = 0;
+  for (int i = 0; i < 100000; ++i) {
+    const vec3 o(Coordinate(rng, 0.04, 0.40), Coordinate(rng, 0.0, 0.36),
+                 Coordinate(rng, 0.22, 0.58));
+    const vec3 d = Direction(rng);
+    const double length = 0.8 * rng.Uniform();
+    Hit hit;
+    const bool closeToAnEnd =
+        sphere.Intersect(o, d, kInfinity, hit) && std::abs(hit.t - length) < 1e-12;
+    if (closeToAnEnd) continue;
+    const bool segment = sphere.IntersectsSegment(o, length * d);
+    ASSERT_EQ(segment, sphere.IntersectAny(o, d, length));
+    blocked += segment ? 1 : 0;
+  }
+  EXPECT_GT(blocked, 3000);  // the segments do meet the sphere
 }
 
 // The cube's bounding-sphere early-out must not cut off a ray that just touches a

@@ -18,6 +18,9 @@ class Cube {
 
   bool Intersect(vec3 origin, vec3 direction, double tMax, Hit& hit) const;
   bool IntersectAny(vec3 origin, vec3 direction, double tMax) const;
+  // Whether the segment from p to p + v (v not normalised) meets the cube between its
+  // ends: the shadow-ray test.
+  bool IntersectsSegment(vec3 p, vec3 v) const;
 
   // The two halves of Intersect, for the scene's closest-hit loop: Nearer lowers t to
   // the cube's hit distance if that is in (0, t) and says which face it is on; FillHit
@@ -77,6 +80,18 @@ inline bool Cube::IntersectAny(vec3 origin, vec3 direction, double tMax) const {
   if (MissesBound(origin, direction, tMax)) return false;
   const SlabCrossing c = IntersectSlabs(origin, direction, position_, maxCorner_);
   return c.hit && ((c.tNear > 0.0 && c.tNear < tMax) || (c.tFar > 0.0 && c.tFar < tMax));
+}
+
+inline bool Cube::IntersectsSegment(vec3 p, vec3 v) const {
+  // Early-out: the line passes outside the bounding sphere, |a f - b v|^2 > R^2 a^2 with
+  // a = v.v, b = f.v (a times the perpendicular part of f; no division).
+  const vec3 f = p - centre_;
+  const double a = glm::dot(v, v);
+  const vec3 perpendicular = a * f - glm::dot(f, v) * v;
+  if (glm::dot(perpendicular, perpendicular) > boundRadius2_ * a * a) return false;
+  // The slab test does not need a unit direction: t is then in units of v.
+  const SlabCrossing c = IntersectSlabs(p, v, position_, maxCorner_);
+  return c.hit && ((c.tNear > 0.0 && c.tNear < 1.0) || (c.tFar > 0.0 && c.tFar < 1.0));
 }
 
 }  // namespace glint

@@ -40,6 +40,10 @@ class MonteCarloIntegrator final : public Integrator {
   const MonteCarloOptions& Options() const { return options_; }
 
  private:
+  // DirectLight at a Lambertian surface, for the light point of the random numbers u, v.
+  Colour DirectLightLambertian(const Hit& hit, vec3 n, double u, double v,
+                               RenderStats& stats) const;
+
   struct Candidate {
     vec3 direction;
     Colour weight;

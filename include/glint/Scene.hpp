@@ -48,30 +48,19 @@ class Scene {
   // Whitted shadow ray from p toward q: blocked by opaque objects only, transparent
   // objects let it through (the design's rule). The room is convex, so no wall can
   // stand between two points inside it.
-  bool VisibleThroughTransparent(vec3 p, vec3 q) const {
-    return !Blocked(p, glm::normalize(q - p), glm::length(q - p), false);
-  }
-  bool VisibleThroughTransparent(vec3 p, vec3 direction, double distance) const {
-    return !Blocked(p, direction, distance, false);
-  }
+  bool VisibleThroughTransparent(vec3 p, vec3 q) const { return !Blocked(p, q, false); }
 
   // Monte Carlo shadow ray from p toward a point q on the light: blocked by every
   // object, glass included (light through glass arrives only as a caustic).
-  bool Occluded(vec3 p, vec3 q) const {
-    return Blocked(p, glm::normalize(q - p), glm::length(q - p), true);
-  }
-  // The same for a shadow ray whose unit direction and length are known already (next-
-  // event estimation has them from the light sample: no second normalisation).
-  bool Occluded(vec3 p, vec3 direction, double distance) const {
-    return Blocked(p, direction, distance, true);
-  }
+  bool Occluded(vec3 p, vec3 q) const { return Blocked(p, q, true); }
 
   const std::string& ObjectName(int object) const;
 
  private:
-  // Whether an object stands on the segment from p along the unit direction d for the
-  // given distance; glass counts if glassBlocks. A zero-length segment is never blocked.
-  bool Blocked(vec3 p, vec3 d, double distance, bool glassBlocks) const;
+  // Whether an object stands on the open segment from p to q; glass counts if
+  // glassBlocks. The segment is tested as it is, p + s (q - p) for s in (0, 1): no
+  // normalisation, no square root for the objects it passes by.
+  bool Blocked(vec3 p, vec3 q, bool glassBlocks) const;
 };
 
 }  // namespace glint

@@ -16,6 +16,10 @@ class Sphere {
   bool Intersect(vec3 origin, vec3 direction, double tMax, Hit& hit) const;
   // Any hit with t in (0, tMax): for shadow rays.
   bool IntersectAny(vec3 origin, vec3 direction, double tMax) const;
+  // Whether the segment from p to p + v (v not normalised) meets the sphere at a point
+  // other than its ends: the shadow-ray test, without a square root or a division for
+  // the segments that pass by.
+  bool IntersectsSegment(vec3 p, vec3 v) const;
 
   // The two halves of Intersect, for the scene's closest-hit loop: Nearer lowers t to
   // this sphere's hit distance if that is in (0, t); FillHit then records the hit.
@@ -76,6 +80,24 @@ inline bool Sphere::IntersectAny(vec3 origin, vec3 direction, double tMax) const
   double t1 = 0.0;
   if (!Roots(origin, direction, t0, t1)) return false;
   return (t0 > 0.0 && t0 < tMax) || (t1 > 0.0 && t1 < tMax);
+}
+
+inline bool Sphere::IntersectsSegment(vec3 p, vec3 v) const {
+  // Points p + s v, s in (0, 1): a s^2 + 2 b s + c = 0 with a = v.v, b = f.v, c = f.f - r^2.
+  // The discriminant b^2 - a c, times a, is r^2 a^2 - |a f - b v|^2, where a f - b v is a
+  // times the part of f perpendicular to v: the stable form Roots uses, without dividing.
+  const vec3 f = p - centre_;
+  const double a = glm::dot(v, v);
+  const double b = glm::dot(f, v);
+  const vec3 perpendicular = a * f - b * v;
+  const double scaled = radius_ * radius_ * a * a - glm::dot(perpendicular, perpendicular);
+  if (scaled < 0.0 || a == 0.0) return false;
+  const double c = glm::dot(f, f) - radius_ * radius_;
+  const double q = -(b + std::copysign(std::sqrt(scaled / a), b));
+  if (q == 0.0) return false;  // touches at s = 0 only
+  const double s0 = q / a;
+  const double s1 = c / q;
+  return (s0 > 0.0 && s0 < 1.0) || (s1 > 0.0 && s1 < 1.0);
 }
 
 }  // namespace glint

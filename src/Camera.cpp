@@ -57,13 +57,16 @@ Camera::Camera(const Wall& room, vec3 eye, int width, int height)
   // A non-square image keeps square pixels: the plane widens with the aspect ratio.
   halfWidth_ = halfHeight_ * static_cast<double>(width) / static_cast<double>(height);
   planeCentre_ = eye_ + viewPlaneDistance_ * viewDirection_;
+  pixelWidth_ = 2.0 * halfWidth_ / static_cast<double>(width);
+  pixelHeight_ = 2.0 * halfHeight_ / static_cast<double>(height);
   pixels_.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
 }
 
 vec3 Camera::ViewPlanePoint(double px, double py) const {
   // Image x grows to the right (+x in the world), image y grows downward (-y).
-  const double sx = (2.0 * px / width_ - 1.0) * halfWidth_;
-  const double sy = (1.0 - 2.0 * py / height_) * halfHeight_;
+  // pixelWidth_ = 2 halfWidth / W, set once: no division per ray.
+  const double sx = px * pixelWidth_ - halfWidth_;
+  const double sy = halfHeight_ - py * pixelHeight_;
   return planeCentre_ + vec3(sx, sy, 0.0);
 }
 

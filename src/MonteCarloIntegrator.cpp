@@ -25,10 +25,7 @@ MonteCarloIntegrator::MonteCarloIntegrator(const Scene& scene, MonteCarloOptions
 
 Colour MonteCarloIntegrator::Trace(RayTree& tree, std::uint32_t root, Pcg32& rng,
                                    RenderStats& stats) const {
-  // Russian roulette looks at throughput relative to the camera ray, whose importance
-  // is 1/N: rootScale = N.
-  const double rootImportance = MaxComponent(tree[root].importance);
-  return TraceNode(tree, root, rootImportance > 0.0 ? 1.0 / rootImportance : 1.0, rng, stats);
+  return TraceNode(tree, root, root, rng, stats);
 }
 
 double MonteCarloIntegrator::EmissionWeight(const Ray& ray, vec3 lightPoint) const {
@@ -145,7 +142,7 @@ int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, Pcg32&
   return 0;
 }
 
-Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, double rootScale,
+Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::uint32_t root,
                                        Pcg32& rng, RenderStats& stats) const {
   // A reference, not a copy (copying the node cost ~10% of the render): valid until
   // AddChildren below may move the nodes; what is needed after that is read first.
@@ -185,7 +182,11 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, doubl
   const int depth = ray.depth;
   Candidate candidates[kMaxBranches];
   int count = depth + 1 < options_.maxDepth ? Scatter(ray, hit, n, rng, candidates) : 0;
-  // Russian roulette by throughput: survive with q = min(1, beta), then divide by q.
+  // Russian roulette by throughput relative to the camera ray, whose importance is
+  // 1/N: survive with q = min(1, beta), then divide by q. (The root is read here, not
+  // before tracing: a load right after the store that wrote it stalls.)
+  const double rootImportance = count > 0 ? MaxComponent(tree[root].importance) : 0.0;
+  const double rootScale = rootImportance > 0.0 ? 1.0 / rootImportance : 1.0;
   int kept = 0;
   for (int i = 0; i < count; ++i) {
     Candidate c = candidates[i];
@@ -224,7 +225,7 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, doubl
   }
   for (int i = 0; i < kept; ++i) {
     const std::uint32_t ci = first + static_cast<std::uint32_t>(i);
-    const Colour c = TraceNode(tree, ci, rootScale, rng, stats);
+    const Colour c = TraceNode(tree, ci, root, rng, stats);
     colour += tree[ci].weight * c;  // C_R = L_local + sum W_i C_i
   }
   tree[index].final = kept == 0;

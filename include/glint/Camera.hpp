@@ -79,6 +79,8 @@ class Camera {
   double viewPlaneDistance_;
   double halfWidth_;
   double halfHeight_;
+  double pixelWidth_ = 0.0;  // the view plane's extent of one pixel, in metres
+  double pixelHeight_ = 0.0;
   int width_;
   int height_;
   std::vector<Pixel> pixels_;

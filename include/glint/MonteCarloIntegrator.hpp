@@ -52,7 +52,7 @@ class MonteCarloIntegrator final : public Integrator {
     bool inside;
   };
 
-  Colour TraceNode(RayTree& tree, std::uint32_t index, double rootScale, Pcg32& rng,
+  Colour TraceNode(RayTree& tree, std::uint32_t index, std::uint32_t root, Pcg32& rng,
                    RenderStats& stats) const;
   // How much of the light's emission a ray that hit it counts: 1, an MIS weight, or 0
   // where next-event estimation has counted it already.

@@ -1,7 +1,5 @@
 #include "BenchCommand.hpp"
 
-#include <sys/resource.h>
-
 #include <chrono>
 #include <cstdio>
 
@@ -20,12 +18,6 @@ struct Row {
   double seconds = 0.0;  // the best of the runs
   RenderStats stats;
 };
-
-double PeakRssMiB() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
-}
 
 // The best of `repeat` timed renders of one pass (the camera is warmed up first, so
 // that the per-thread arenas exist before the clock starts).
@@ -64,7 +56,7 @@ std::string ToJson(const BenchArgs& args, const std::vector<Row>& rows) {
   j["scene"] = args.scene;
   j["size"] = args.size;
   j["repeat"] = args.repeat;
-  j["peak_rss_mib"] = PeakRssMiB();
+  j["peak_rss_mib"] = PeakResidentMiB();
   for (const Row& row : rows) {
     const double rays = static_cast<double>(row.stats.TotalRays());
     j["runs"].push_back({{"mode", row.mode},
@@ -109,7 +101,7 @@ int RunBench(const BenchArgs& args) {
       rows.push_back(row);
     }
   }
-  std::printf("peak memory (resident): %.1f MiB\n", PeakRssMiB());
+  std::printf("peak memory (resident): %.1f MiB\n", PeakResidentMiB());
   if (!args.json.empty()) WriteFileAtomically(args.json, ToJson(args, rows));
   return kExitOk;
 }

@@ -1,6 +1,7 @@
 #include "RenderJob.hpp"
 
 #include <omp.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -16,6 +17,12 @@
 #include "glint/WhittedIntegrator.hpp"
 
 namespace glint {
+
+double PeakResidentMiB() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
 
 namespace {
 
@@ -200,6 +207,7 @@ std::string StatsJson(const RenderArgs& args, const RenderSetup& s, const Camera
   j["camera_paths_per_second"] = static_cast<double>(st.cameraRays) / seconds;
   j["nonfinite_samples"] = st.nonFiniteSamples;
   j["interrupted"] = r.interrupted;
+  j["peak_rss_mib"] = PeakResidentMiB();
   if (args.mode == "mc") {
     j["mc"] = {{"walls", args.walls},
                {"glass", args.glass},

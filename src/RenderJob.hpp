@@ -65,6 +65,8 @@ RenderResult RunPasses(Camera& camera, const Integrator& integrator, const Rende
 std::string StatsJson(const RenderArgs& args, const RenderSetup& s, const Camera& camera,
                       const RenderResult& r);
 void PrintSummary(const RenderArgs& args, const RenderSetup& s, const RenderResult& r);
+// The process's peak resident memory so far (for --stats and glint bench).
+double PeakResidentMiB();
 // "dir/name.ext" -> "dir/name.partial.ext"
 std::string PartialPath(const std::string& path);
 

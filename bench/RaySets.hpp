@@ -49,38 +49,39 @@ inline RaySet CameraRays(const Scene& scene, int count = kRays) {
   return set;
 }
 
-// Rays that leave the first hits (light excluded), cosine-distributed about the normal
-// on the side the camera ray came from: the walls' rays of `--walls diffuse`.
-inline RaySet BounceRays(const Scene& scene, int count = kRays) {
+// Rays drawn from the first hits of camera rays (the light excluded): for each hit,
+// `spawn(point, n, rng, set)` adds at most one ray; n faces the side the camera came from.
+template <typename Spawn>
+RaySet FromFirstHits(const Scene& scene, int count, std::uint64_t stream, Spawn spawn) {
   const RaySet camera = CameraRays(scene, 4 * count);
-  Pcg32 rng(7, 2);
+  Pcg32 rng(7, stream);
   RaySet set;
   for (std::size_t i = 0; i < camera.Size() && static_cast<int>(set.Size()) < count; ++i) {
     Hit hit;
     if (!scene.Intersect(camera.origins[i], camera.directions[i], hit, true) || hit.light) continue;
     const vec3 n = glm::dot(camera.directions[i], hit.normal) < 0.0 ? hit.normal : -hit.normal;
-    const vec3 w = glm::normalize(
-        Frame::FromZ(n).ToWorld(SampleCosineHemisphere(rng.Uniform(), rng.Uniform())));
-    set.Add(OffsetRayOrigin(hit.point, n, w), w, kInfinity);
+    spawn(hit.point, n, rng, set);
   }
   return set;
 }
 
-// Next-event estimation's shadow rays: from the first hits to random points on the light.
+// Cosine-distributed about the normal: the walls' rays of `--walls diffuse`.
+inline RaySet BounceRays(const Scene& scene, int count = kRays) {
+  return FromFirstHits(scene, count, 2, [](vec3 p, vec3 n, Pcg32& rng, RaySet& set) {
+    const vec3 w = glm::normalize(
+        Frame::FromZ(n).ToWorld(SampleCosineHemisphere(rng.Uniform(), rng.Uniform())));
+    set.Add(OffsetRayOrigin(p, n, w), w, kInfinity);
+  });
+}
+
+// Next-event estimation's shadow rays: to random points on the light.
 inline RaySet ShadowRays(const Scene& scene, int count = kRays) {
-  const RaySet camera = CameraRays(scene, 4 * count);
-  Pcg32 rng(7, 3);
-  RaySet set;
-  for (std::size_t i = 0; i < camera.Size() && static_cast<int>(set.Size()) < count; ++i) {
-    Hit hit;
-    if (!scene.Intersect(camera.origins[i], camera.directions[i], hit, true) || hit.light) continue;
-    const LightSample ls = scene.light->SampleLi(hit.point, rng.Uniform(), rng.Uniform());
-    if (ls.pdf == 0.0) continue;
-    const vec3 n = glm::dot(camera.directions[i], hit.normal) < 0.0 ? hit.normal : -hit.normal;
-    const vec3 o = OffsetRayOrigin(hit.point, n, ls.wi);
+  return FromFirstHits(scene, count, 3, [&](vec3 p, vec3 n, Pcg32& rng, RaySet& set) {
+    const LightSample ls = scene.light->SampleLi(p, rng.Uniform(), rng.Uniform());
+    if (ls.pdf == 0.0) return;
+    const vec3 o = OffsetRayOrigin(p, n, ls.wi);
     set.Add(o, ls.wi, glm::length(ls.point - o), ls.point);
-  }
-  return set;
+  });
 }
 
 }  // namespace glint::bench

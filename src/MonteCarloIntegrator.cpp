@@ -52,13 +52,14 @@ Colour MonteCarloIntegrator::DirectLight(const Hit& hit, vec3 d, vec3 n, double 
   const LightSample ls = light_.SampleLi(hit.point, u, v);
   const double cosTheta = glm::dot(n, ls.wi);
   if (ls.invPdf == 0.0 || cosTheta <= 0.0) return Colour(0.0);
-  const Colour f = PhongBrdf(m, d, n, ls.wi);
+  const PhongValue phong = EvaluatePhong(m, d, n, ls.wi);
+  const Colour f = phong.f;
   if (f == Colour(0.0)) return Colour(0.0);
   ++stats.shadowRays;
   if (scene_.Occluded(OffsetRayOrigin(hit.point, n, ls.wi), ls.point)) return Colour(0.0);
   double w = 1.0;
   if (misBranches > 0.0) {  // MIS against `misBranches` BRDF samples
-    w = PowerHeuristic(ls.pdf, misBranches * PhongPdf(m, d, n, ls.wi));
+    w = PowerHeuristic(ls.pdf, misBranches * phong.pdf);
   }
   return w * ls.Le * f * (cosTheta * ls.invPdf);
 }
@@ -80,12 +81,6 @@ Colour MonteCarloIntegrator::DirectLightLambertian(const Hit& hit, vec3 n, doubl
   const double r2 = glm::dot(x, x);
   const double geometry = cosNumerator * cosLightNumerator * light_.Area() / (r2 * r2);
   return light_.Radiance() * hit.material->reflectance * (kInvPi * geometry);
-}
-
-double MonteCarloIntegrator::GlassReflectance(vec3 d, vec3 normal, double ior) const {
-  const double exact = FresnelDielectric(d, normal, ior);
-  if (options_.fresnel == MonteCarloOptions::Fresnel::Exact || exact == 1.0) return exact;
-  return FresnelNormalIncidence(ior);  // small-angle: R0 at every angle (TIR kept)
 }
 
 int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, Pcg32& rng,
@@ -120,8 +115,12 @@ int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, Pcg32&
     }
     case MaterialType::Glass: {
       const vec3 mirror = glm::normalize(Reflect(d, hit.normal));
-      const std::optional<vec3> refracted = Refract(d, hit.normal, m.ior);
-      const double f = refracted ? GlassReflectance(d, hit.normal, m.ior) : 1.0;
+      const DielectricInterface glass = CrossDielectric(d, hit.normal, m.ior);
+      const std::optional<vec3>& refracted = glass.refracted;
+      // Small-angle Fresnel: R0 at every angle, total reflection (TIR, grazing) kept.
+      const bool exact = options_.fresnel == MonteCarloOptions::Fresnel::Exact;
+      const double f =
+          exact || glass.reflectance == 1.0 ? glass.reflectance : FresnelNormalIncidence(m.ior);
       if (options_.glass == MonteCarloOptions::Glass::Choose) {
         // One child, reflection with probability F: weight F / F = (1 - F) / (1 - F) = 1.
         if (!refracted || rng.Uniform() < f) {

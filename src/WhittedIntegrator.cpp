@@ -57,9 +57,10 @@ std::uint32_t WhittedIntegrator::SpawnChildren(RayTree& tree, std::uint32_t inde
   const vec3 mirror = glm::normalize(Reflect(d, hit.normal));
   if (m.IsTransparent()) {
     // Fresnel split; F = 1 under total internal reflection. The index ratio flips for
-    // rays inside (FresnelDielectric and Refract see it from dot(d, n)).
-    const std::optional<vec3> refracted = Refract(d, hit.normal, m.ior);
-    const double f = refracted ? FresnelDielectric(d, hit.normal, m.ior) : 1.0;
+    // rays inside (CrossDielectric sees it from dot(d, n)).
+    const DielectricInterface glass = CrossDielectric(d, hit.normal, m.ior);
+    const std::optional<vec3>& refracted = glass.refracted;
+    const double f = glass.reflectance;  // 1 for total internal reflection
     if (f > 0.0) children[count++] = {mirror, Colour(w * f), RayKind::Reflected, parent.inside};
     if (refracted && f < 1.0) {
       children[count++] = {*refracted, Colour(w * (1.0 - f)), RayKind::Refracted, !parent.inside};

@@ -4,6 +4,7 @@
 #include "Statistics.hpp"
 #include "TestScenes.hpp"
 #include "glint/Phong.hpp"
+#include "glint/Rng.hpp"
 
 namespace glint {
 namespace {
@@ -59,6 +60,25 @@ TEST(Sampling, PhongSamplerReportsTheDensityItSamplesWith) {
     const PhongSample s = SamplePhong(m, d, vec3(0, 0, 1), rng.Uniform(), rng.Uniform());
     ASSERT_NEAR(s.pdf, PhongPdf(m, d, vec3(0, 0, 1), s.direction), 1e-9 * s.pdf);
     ASSERT_NEAR(glm::length(s.direction), 1.0, 1e-14);
+  }
+}
+
+TEST(Sampling, EvaluatePhongEqualsBrdfAndPdf) {
+  Pcg32 rng(3, 9);
+  for (const double exponent : {0.0, 1.0, 100.0, 1e5}) {
+    Material m;
+    m.type = MaterialType::Phong;
+    m.reflectance = Colour(0.9, 0.5, 0.2);
+    m.exponent = exponent;
+    for (int i = 0; i < 20000; ++i) {
+      const vec3 n = glm::normalize(vec3(rng.Uniform() - 0.5, 1.0, rng.Uniform() - 0.5));
+      const vec3 d = glm::normalize(vec3(rng.Uniform() - 0.5, -rng.Uniform(), rng.Uniform() - 0.5));
+      const vec3 psi = glm::normalize(
+          vec3(2.0 * rng.Uniform() - 1.0, 2.0 * rng.Uniform() - 1.0, 2.0 * rng.Uniform() - 1.0));
+      const PhongValue v = EvaluatePhong(m, d, n, psi);
+      ASSERT_EQ(v.f, PhongBrdf(m, d, n, psi));
+      ASSERT_EQ(v.pdf, PhongPdf(m, d, n, psi));
+    }
   }
 }
 

@@ -8,6 +8,17 @@
 
 namespace glint {
 
+// What a ray along d meets at a dielectric surface with outward normal n: the refracted
+// direction (nothing for total internal reflection) and the unpolarised Fresnel
+// reflectance F = (r_par^2 + r_perp^2) / 2 (1 for total internal reflection), computed
+// together from one cos_i and cos_t. A ray from inside (dot(d, n) > 0) sees the index
+// ratio flipped.
+struct DielectricInterface {
+  std::optional<vec3> refracted;
+  double reflectance;
+};
+DielectricInterface CrossDielectric(vec3 d, vec3 n, double ior);
+
 // Unpolarised Fresnel reflectance for a ray arriving along d at a surface with outward
 // normal n: F = (r_par^2 + r_perp^2) / 2. A ray from inside (dot(d, n) > 0) sees the
 // index ratio flipped. Returns 1 for total internal reflection.

@@ -59,7 +59,6 @@ class MonteCarloIntegrator final : public Integrator {
   double EmissionWeight(const Ray& ray, vec3 lightPoint) const;
   // Candidate children of a hit (before Russian roulette); returns their number.
   int Scatter(const Ray& ray, const Hit& hit, vec3 n, Pcg32& rng, Candidate* out) const;
-  double GlassReflectance(vec3 d, vec3 normal, double ior) const;
 
   const Scene& scene_;
   const Light& light_;

@@ -38,4 +38,19 @@ inline Colour PhongBrdf(const Material& m, vec3 d, vec3 n, vec3 psi) {
   return m.reflectance * ((m.exponent + 2.0) / (2.0 * kPi) * std::pow(cosAlpha, m.exponent));
 }
 
+// Both at once, as next-event estimation with MIS needs them: one mirror direction and
+// one power cos^n(alpha) instead of two. Equal to PhongBrdf and PhongPdf.
+struct PhongValue {
+  Colour f;
+  double pdf;
+};
+inline PhongValue EvaluatePhong(const Material& m, vec3 d, vec3 n, vec3 psi) {
+  const double cosAlpha = glm::dot(Reflect(d, n), psi);
+  if (cosAlpha <= 0.0) return {Colour(0.0), 0.0};
+  const double lobe = std::pow(cosAlpha, m.exponent);
+  const double pdf = (m.exponent + 1.0) / (2.0 * kPi) * lobe;
+  if (glm::dot(n, psi) <= 0.0) return {Colour(0.0), pdf};
+  return {m.reflectance * ((m.exponent + 2.0) / (2.0 * kPi) * lobe), pdf};
+}
+
 }  // namespace glint

@@ -41,6 +41,10 @@ class Wall {
   // The wall side on each face of the box (IntersectSlabs' order); the front is open.
   static constexpr std::array<int, 6> kSideOfFace = {kLeft, kRight, kFloor, kCeiling, kBack, -1};
 
+  // Nearer's two cases for rays that pass through the room's inside.
+  bool Exit(vec3 o, vec3 d, double& t, int& side) const;
+  bool EntersThroughOpening(vec3 o, vec3 d) const;
+
   vec3 position_;
   vec3 maxCorner_;
   double size_;
@@ -49,35 +53,54 @@ class Wall {
   int firstObject_;
 };
 
-// Inline: this runs for every ray.
+// Inline: these run for every ray.
+
+inline bool Wall::Exit(vec3 o, vec3 d, double& t, int& side) const {
+  // The ray leaves through the face that comes first among the three it heads for:
+  // along axis a at t_a = gap_a / |d_a|. Compare t_b < t_a as gap_b |d_a| < gap_a |d_b|
+  // (no division; d_b = 0 means t_b = infinity, which never comes sooner), then divide
+  // once for the winner.
+  const vec3 gap(d.x > 0.0 ? maxCorner_.x - o.x : o.x - position_.x,
+                 d.y > 0.0 ? maxCorner_.y - o.y : o.y - position_.y,
+                 d.z > 0.0 ? maxCorner_.z - o.z : o.z - position_.z);
+  const vec3 speed = glm::abs(d);
+  const auto sooner = [&](int b, int a) {
+    return speed[b] > 0.0 && (speed[a] == 0.0 || gap[b] * speed[a] < gap[a] * speed[b]);
+  };
+  int axis = 0;
+  if (sooner(1, axis)) axis = 1;
+  if (sooner(2, axis)) axis = 2;
+  const int face = 2 * axis + (d[axis] > 0.0 ? 1 : 0);
+  const double tHit = gap[axis] / speed[axis];
+  if (kSideOfFace[face] < 0 || !(tHit > 0.0 && tHit < t)) return false;  // out the front
+  t = tHit;
+  side = kSideOfFace[face];
+  return true;
+}
+
+inline bool Wall::EntersThroughOpening(vec3 o, vec3 d) const {
+  // In front of the open side, within its x and y range, heading in, and crossing the
+  // front plane inside the opening: x + s d_x / |d_z| in [lo, hi] with s = o_z - hi_z,
+  // written as (x - lo) |d_z| + s d_x >= 0 and (hi - x) |d_z| - s d_x >= 0 (no division).
+  const vec3 lo = position_;
+  const vec3 hi = maxCorner_;
+  if (!(d.z < 0.0 && o.z > hi.z && o.x >= lo.x && o.x <= hi.x && o.y >= lo.y && o.y <= hi.y)) {
+    return false;
+  }
+  const double s = o.z - hi.z;
+  const double speed = -d.z;
+  return (o.x - lo.x) * speed + s * d.x >= 0.0 && (hi.x - o.x) * speed - s * d.x >= 0.0 &&
+         (o.y - lo.y) * speed + s * d.y >= 0.0 && (hi.y - o.y) * speed - s * d.y >= 0.0;
+}
+
 inline bool Wall::Nearer(vec3 origin, vec3 direction, double& t, int& side) const {
   const vec3 o = origin;
   const vec3 d = direction;
-  if (Contains(o)) {
-    // From inside the room the ray leaves through the face that comes first among the
-    // three it heads for: along axis a at t_a = gap_a / |d_a|. Compare t_b < t_a as
-    // gap_b |d_a| < gap_a |d_b| (no division; d_b = 0 means t_b = infinity, which never
-    // comes sooner), then divide once for the winner.
-    const vec3 gap(d.x > 0.0 ? maxCorner_.x - o.x : o.x - position_.x,
-                   d.y > 0.0 ? maxCorner_.y - o.y : o.y - position_.y,
-                   d.z > 0.0 ? maxCorner_.z - o.z : o.z - position_.z);
-    const vec3 speed = glm::abs(d);
-    const auto sooner = [&](int b, int a) {
-      return speed[b] > 0.0 && (speed[a] == 0.0 || gap[b] * speed[a] < gap[a] * speed[b]);
-    };
-    int axis = 0;
-    if (sooner(1, axis)) axis = 1;
-    if (sooner(2, axis)) axis = 2;
-    const int face = 2 * axis + (d[axis] > 0.0 ? 1 : 0);
-    const double tHit = gap[axis] / speed[axis];
-    if (kSideOfFace[face] < 0 || !(tHit > 0.0 && tHit < t)) return false;  // out the front
-    t = tHit;
-    side = kSideOfFace[face];
-    return true;
-  }
-  // From outside (the camera's rays): two-sided rectangles on the box's faces, so the
-  // first face crossing ahead of the origin that is not the open front. A camera ray
-  // enters through the front (tNear) and meets a wall where it leaves (tFar).
+  // From inside the room, or from in front of it through the opening (the camera's
+  // rays, by the set-up rule), the first wall is where the ray leaves the box.
+  if (Contains(o) || EntersThroughOpening(o, d)) return Exit(o, d, t, side);
+  // From anywhere else outside: two-sided rectangles on the box's faces, so the first
+  // face crossing ahead of the origin that is not the open front.
   const SlabCrossing c = IntersectSlabs(o, d, position_, maxCorner_);
   if (!c.hit) return false;
   int face = -1;

@@ -47,8 +47,9 @@ BENCHMARK(SphereClosest);
 void SphereAny(benchmark::State& state) {
   const Sphere& sphere = CanonicalScene().spheres[0];
   const RaySet& r = Shadow();
-  Run(state, r,
-      [&](std::size_t i) { return sphere.IntersectAny(r.origins[i], r.directions[i], r.tMax[i]); });
+  Run(state, r, [&](std::size_t i) {
+    return sphere.IntersectsSegment(r.origins[i], r.ends[i] - r.origins[i]);
+  });
 }
 BENCHMARK(SphereAny);
 
@@ -65,8 +66,9 @@ BENCHMARK(CubeClosest);
 void CubeAny(benchmark::State& state) {
   const Cube& cube = CanonicalScene().cubes[0];
   const RaySet& r = Shadow();
-  Run(state, r,
-      [&](std::size_t i) { return cube.IntersectAny(r.origins[i], r.directions[i], r.tMax[i]); });
+  Run(state, r, [&](std::size_t i) {
+    return cube.IntersectsSegment(r.origins[i], r.ends[i] - r.origins[i]);
+  });
 }
 BENCHMARK(CubeAny);
 

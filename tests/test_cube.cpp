@@ -33,7 +33,7 @@ TEST(Cube, MissAndBehind) {
   Hit hit;
   EXPECT_FALSE(kCube.Intersect(vec3(1.5, 0.5, 5.0), vec3(0, 0, -1), kInfinity, hit));
   EXPECT_FALSE(kCube.Intersect(vec3(0.5, 0.5, 5.0), vec3(0, 0, 1), kInfinity, hit));
-  EXPECT_FALSE(kCube.IntersectAny(vec3(0.5, 0.5, 5.0), vec3(0, 0, -1), 3.5));
+  EXPECT_FALSE(kCube.IntersectsSegment(vec3(0.5, 0.5, 5.0), vec3(0, 0, -3.5)));
 }
 
 TEST(Cube, RayAlongAnEdgeHitsTheFaceItMeets) {

@@ -27,13 +27,13 @@ TEST(Sphere, HitFromInsideHasOutwardNormal) {
 TEST(Sphere, BehindTheOriginIsAMiss) {
   Hit hit;
   EXPECT_FALSE(kUnit.Intersect(vec3(0, 0, 5), vec3(0, 0, 1), kInfinity, hit));
-  EXPECT_FALSE(kUnit.IntersectAny(vec3(0, 0, 5), vec3(0, 0, 1), kInfinity));
+  EXPECT_FALSE(kUnit.IntersectsSegment(vec3(0, 0, 5), vec3(0, 0, 100)));
 }
 
 TEST(Sphere, BeyondTMaxIsAMiss) {
   Hit hit;
   EXPECT_FALSE(kUnit.Intersect(vec3(0, 0, -5), vec3(0, 0, 1), 3.9, hit));
-  EXPECT_FALSE(kUnit.IntersectAny(vec3(0, 0, -5), vec3(0, 0, 1), 3.9));
+  EXPECT_FALSE(kUnit.IntersectsSegment(vec3(0, 0, -5), vec3(0, 0, 3.9)));
 }
 
 TEST(Sphere, TangentRayIsFiniteAndNearMissesAreDecided) {
@@ -76,7 +76,7 @@ TEST(Sphere, OffsetRayDoesNotHitItsOwnSurface) {
     // Leaving outward, nearly grazing: must not find the sphere again.
     const vec3 t = glm::normalize(glm::cross(n, vec3(0.3, 0.5, 0.7)));
     const vec3 out = glm::normalize(t + 1e-4 * n);
-    EXPECT_FALSE(s.IntersectAny(OffsetRayOrigin(p, n, out), out, kInfinity));
+    EXPECT_FALSE(s.IntersectsSegment(OffsetRayOrigin(p, n, out), 10.0 * out));  // 10 >> 2r
     // Leaving inward: the next hit is the far side, not the start point.
     const vec3 in = glm::normalize(t - 0.5 * n);
     Hit hit;

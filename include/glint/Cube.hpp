@@ -17,7 +17,6 @@ class Cube {
   Cube(vec3 position, double size, const Material& material, int object);
 
   bool Intersect(vec3 origin, vec3 direction, double tMax, Hit& hit) const;
-  bool IntersectAny(vec3 origin, vec3 direction, double tMax) const;
   // Whether the segment from p to p + v (v not normalised) meets the cube between its
   // ends: the shadow-ray test.
   bool IntersectsSegment(vec3 p, vec3 v) const;
@@ -74,12 +73,6 @@ inline bool Cube::Nearer(vec3 origin, vec3 direction, double& t, int& face) cons
   t = tHit;
   face = entering ? c.nearFace : c.farFace;
   return true;
-}
-
-inline bool Cube::IntersectAny(vec3 origin, vec3 direction, double tMax) const {
-  if (MissesBound(origin, direction, tMax)) return false;
-  const SlabCrossing c = IntersectSlabs(origin, direction, position_, maxCorner_);
-  return c.hit && ((c.tNear > 0.0 && c.tNear < tMax) || (c.tFar > 0.0 && c.tFar < tMax));
 }
 
 inline bool Cube::IntersectsSegment(vec3 p, vec3 v) const {

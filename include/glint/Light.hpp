@@ -9,9 +9,8 @@ namespace glint {
 
 // A point on the light chosen for a shading point p, as seen from p.
 struct LightSample {
-  vec3 point;  // y on the light
-  vec3 wi;     // unit direction from p to y
-  double distance;
+  vec3 point;     // y on the light
+  vec3 wi;        // unit direction from p to y
   double pdf;     // solid-angle density of wi: |p - y|^2 / (cos(theta_y) A); 0 if unusable
   double invPdf;  // 1 / pdf, computed without waiting for a division; 0 if unusable
   Colour Le;      // radiance leaving y toward p
@@ -46,13 +45,12 @@ class Light {
 
 // Inline: next-event estimation calls it at every wall and Phong hit.
 inline LightSample Light::SampleLi(vec3 p, double u, double v) const {
-  LightSample s{SamplePoint(u, v), vec3(0.0), 0.0, 0.0, 0.0, Colour(0.0)};
+  LightSample s{SamplePoint(u, v), vec3(0.0), 0.0, 0.0, Colour(0.0)};
   const vec3 toLight = s.point - p;
   const double r2 = glm::dot(toLight, toLight);
   if (r2 == 0.0) return s;
   const double invR2 = 1.0 / r2;  // in parallel with the square root
-  s.distance = std::sqrt(r2);
-  s.wi = toLight / s.distance;
+  s.wi = toLight / std::sqrt(r2);
   const double cosLight = -glm::dot(s.wi, shape_.Normal());
   if (cosLight <= 0.0) return s;  // p is behind the emitting side
   s.pdf = r2 / (cosLight * shape_.Area());

@@ -14,8 +14,6 @@ class Sphere {
   // Closest hit with t in (0, tMax), from outside or inside. The hit point is projected
   // back onto the surface, so round-off cannot leave it inside or outside the sphere.
   bool Intersect(vec3 origin, vec3 direction, double tMax, Hit& hit) const;
-  // Any hit with t in (0, tMax): for shadow rays.
-  bool IntersectAny(vec3 origin, vec3 direction, double tMax) const;
   // Whether the segment from p to p + v (v not normalised) meets the sphere at a point
   // other than its ends: the shadow-ray test, without a square root or a division for
   // the segments that pass by.
@@ -73,13 +71,6 @@ inline bool Sphere::Nearer(vec3 origin, vec3 direction, double& t) const {
   if (!(nearest > 0.0 && nearest < t)) return false;
   t = nearest;
   return true;
-}
-
-inline bool Sphere::IntersectAny(vec3 origin, vec3 direction, double tMax) const {
-  double t0 = 0.0;
-  double t1 = 0.0;
-  if (!Roots(origin, direction, t0, t1)) return false;
-  return (t0 > 0.0 && t0 < tMax) || (t1 > 0.0 && t1 < tMax);
 }
 
 inline bool Sphere::IntersectsSegment(vec3 p, vec3 v) const {

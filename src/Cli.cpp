@@ -77,9 +77,11 @@ void AddRenderOptions(CLI::App* render, RenderArgs& args, bool outputs) {
                      "Image size in pixels, N (square) or WxH; default: the scene's camera "
                      "resolution (512x512 for the canonical scene)");
   render
-      ->add_option("--spp", args.spp,
-                   "Rays per pixel, through random points inside it; default: the scene's "
-                   "value for the mode (with --time: rays per pass, default 1)")
+      ->add_option(
+          "--spp", args.spp,
+          "Rays per pixel, through random points inside it; default: the scene's "
+          "value for the mode (with --time: rays per pass; default: passes of 1, 2, 4, ... "
+          "rays, as many as the time left allows)")
       ->check(CLI::Range(1, 1 << 20));
   if (outputs) {
     render

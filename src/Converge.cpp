@@ -12,6 +12,7 @@
 #include "glint/ImageError.hpp"
 #include "glint/ImageIO.hpp"
 #include "glint/JsonReader.hpp"
+#include "glint/PassSchedule.hpp"
 
 namespace glint {
 
@@ -143,17 +144,24 @@ int RunConverge(const ConvergeArgs& a) {
     double seconds = 0.0;
     std::uint64_t spp = 0;
     std::uint32_t pass = 0;
+    PassSchedule schedule(v.args.spp > 0 ? v.args.spp : 0);
+    int rays = schedule.FirstRays();
     for (std::size_t k = 0; k < steps.size() && !interrupted.load(); ++k) {
       // Passes up to this step: by rays per pixel, one pass to the next rung; by time,
-      // passes of --spp rays (default 1) until the rung's time is reached.
+      // passes of --spp rays (default: 1, 2, 4, ... as the time left allows) until the
+      // rung's time is reached.
       do {
-        options.raysPerPixel = byTime ? (v.args.spp > 0 ? v.args.spp : 1)
-                                      : static_cast<int>(steps[k] - static_cast<double>(spp));
+        options.raysPerPixel =
+            byTime ? rays : static_cast<int>(steps[k] - static_cast<double>(spp));
         options.pass = pass++;
         const auto start = std::chrono::steady_clock::now();
         camera.Render(*integrator, options);
-        seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double passSeconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        seconds += passSeconds;
         spp += static_cast<std::uint64_t>(options.raysPerPixel);
+        rays = std::max(schedule.FirstRays(),
+                        schedule.Next(options.raysPerPixel, passSeconds, steps[k] - seconds));
       } while (byTime && seconds < steps[k] && !interrupted.load());
       const Row row{v.name, static_cast<int>(k), spp, seconds,
                     CompareImages(camera.ToImage(), reference)};

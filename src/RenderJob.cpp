@@ -13,6 +13,7 @@
 #include "Interrupt.hpp"
 #include "Progress.hpp"
 #include "glint/ImageIO.hpp"
+#include "glint/PassSchedule.hpp"
 #include "glint/SceneLoader.hpp"
 #include "glint/WhittedIntegrator.hpp"
 
@@ -109,8 +110,9 @@ RenderSetup Prepare(const RenderArgs& args, bool checkOutputs) {
   if (!args.size.empty()) ParseSize(args.size, s.width, s.height);
   s.threads = args.threads > 0 ? args.threads : omp_get_max_threads();
   CheckMemory(s.width, s.height, s.threads);
-  // With a time budget, --spp is the rays per pixel of each pass (default 1).
-  s.raysPerPass = args.spp > 0 ? args.spp : (args.timeBudget > 0.0 ? 1 : s.mode.spp);
+  // With a time budget, --spp is the rays per pixel of each pass; without it, 0: passes
+  // of 1, 2, 4, ... rays (PassSchedule).
+  s.raysPerPass = args.spp > 0 ? args.spp : (args.timeBudget > 0.0 ? 0 : s.mode.spp);
   s.exposure = args.exposure > 0.0 ? args.exposure : s.mode.exposure;
   s.outputs = args.outputs;
   if (!checkOutputs) return s;
@@ -160,7 +162,6 @@ RenderResult RunPasses(Camera& camera, const Integrator& integrator, const Rende
   const bool progressive = args.timeBudget > 0.0;
   RenderResult r;
   RenderOptions options;
-  options.raysPerPixel = s.raysPerPass;
   options.seed = args.seed;
   options.threads = args.threads;
   options.cancel = &interrupted;
@@ -169,16 +170,20 @@ RenderResult RunPasses(Camera& camera, const Integrator& integrator, const Rende
     const double pass = static_cast<double>(done) / static_cast<double>(total);
     bar.Update(progressive ? elapsed() / args.timeBudget : pass, label.c_str());
   };
-  double lastPass = 0.0;
+  PassSchedule schedule(s.raysPerPass);
+  int rays = progressive ? schedule.FirstRays() : s.raysPerPass;
   do {
+    options.raysPerPixel = rays;
     options.pass = r.passes;
     label = progressive ? "pass " + std::to_string(r.passes + 1) : "";
     const double before = elapsed();
     r.stats += camera.Render(integrator, options);
-    lastPass = elapsed() - before;
+    const double passSeconds = elapsed() - before;
     if (interrupted.load()) break;
     ++r.passes;
-  } while (progressive && elapsed() + lastPass <= args.timeBudget);
+    r.spp += static_cast<std::uint64_t>(rays);
+    rays = progressive ? schedule.Next(rays, passSeconds, args.timeBudget - elapsed()) : 0;
+  } while (rays > 0);
   r.seconds = elapsed();
   r.interrupted = interrupted.load();
   bar.Finish();
@@ -193,7 +198,7 @@ std::string StatsJson(const RenderArgs& args, const RenderSetup& s, const Camera
   j["mode"] = args.mode;
   j["width"] = camera.Width();
   j["height"] = camera.Height();
-  j["spp"] = static_cast<std::uint64_t>(r.passes) * static_cast<std::uint64_t>(s.raysPerPass);
+  j["spp"] = r.spp;
   j["passes"] = r.passes;
   j["threads"] = s.threads;
   j["seed"] = args.seed;
@@ -222,7 +227,7 @@ std::string StatsJson(const RenderArgs& args, const RenderSetup& s, const Camera
 void PrintSummary(const RenderArgs& args, const RenderSetup& s, const RenderResult& r) {
   const RenderStats& st = r.stats;
   const double total = static_cast<double>(st.TotalRays());
-  const unsigned long long spp = static_cast<unsigned long long>(r.passes) * s.raysPerPass;
+  const auto spp = static_cast<unsigned long long>(r.spp);
   std::fprintf(stderr,
                "glint: %s %dx%d, %llu rays/pixel (%u pass%s), %d thread%s: %.3f s, %.3g rays "
                "(camera %.3g, reflected %.3g, refracted %.3g, diffuse %.3g, shadow %.3g), "

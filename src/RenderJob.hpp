@@ -39,7 +39,7 @@ struct RenderSetup {
   ModeSettings mode;
   int width = 0;
   int height = 0;
-  int raysPerPass = 1;
+  int raysPerPass = 1;  // 0: passes that double (PassSchedule), for --time without --spp
   int threads = 1;
   double exposure = 1.0;
   std::vector<std::string> outputs;
@@ -49,6 +49,7 @@ struct RenderResult {
   RenderStats stats;
   double seconds = 0.0;
   std::uint32_t passes = 0;
+  std::uint64_t spp = 0;  // rays per pixel of the finished passes
   bool interrupted = false;
 };
 

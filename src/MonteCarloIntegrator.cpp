@@ -168,9 +168,7 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::
   // Next-event estimation at walls (always) and Phong objects (unless BRDF-only).
   using Strategy = MonteCarloOptions::Strategy;
   if (m.type == MaterialType::Lambertian) {
-    const double u = rng.Uniform();  // the light point's (u, v), drawn in this order
-    const double v = rng.Uniform();
-    colour += DirectLightLambertian(hit, n, u, v, stats);
+    colour += DirectLight(hit, ray.direction, n, 0.0, rng, stats);
     // The design's terminal walls end most paths: no child, nothing else to do.
     if (options_.walls == MonteCarloOptions::Walls::Terminal) {
       tree[index].final = true;

@@ -102,40 +102,41 @@ TEST(Slabs, CubeMatchesItsSixRectangles) {
 }
 
 // The shadow-ray tests take a segment's end instead of a unit direction: they must
-// agree with the closest hit below the segment's length.
-TEST(Slabs, CubeSegmentTestAgreesWithTheRayTest) {
-  const Cube cube(vec3(0.42, 0.0, 0.06), 0.28, Material{}, 0);
-  Pcg32 rng(5, 5);
+// agree with the closest hit below the segment's length, on 100 000 random segments
+// starting around the box [lo, hi] with lengths up to maxLength (except within
+// round-off of an end). Counts the segments that meet the shape in `blocked`.
+template <typename Shape>
+void CompareSegmentsWithRays(const Shape& shape, vec3 lo, vec3 hi, double maxLength, Pcg32 rng,
+                             int& blocked) {
+  blocked = 0;
   for (int i = 0; i < 100000; ++i) {
-    const vec3 o(Coordinate(rng, 0.42, 0.70), Coordinate(rng, 0.0, 0.28),
-                 Coordinate(rng, 0.06, 0.34));
+    const vec3 o(Coordinate(rng, lo.x, hi.x), Coordinate(rng, lo.y, hi.y),
+                 Coordinate(rng, lo.z, hi.z));
     const vec3 d = Direction(rng);
-    const double tMax = 0.6 * rng.Uniform();
+    const double length = maxLength * rng.Uniform();
     Hit hit;
     const bool closeToAnEnd =
-        cube.Intersect(o, d, kInfinity, hit) && std::abs(hit.t - tMax) < 1e-12;
+        shape.Intersect(o, d, kInfinity, hit) && std::abs(hit.t - length) < 1e-12;
     if (closeToAnEnd) continue;
-    ASSERT_EQ(cube.IntersectsSegment(o, tMax * d), cube.Intersect(o, d, tMax, hit));
+    const bool segment = shape.IntersectsSegment(o, length * d);
+    ASSERT_EQ(segment, shape.Intersect(o, d, length, hit));
+    blocked += segment ? 1 : 0;
   }
+}
+
+TEST(Slabs, CubeSegmentTestAgreesWithTheRayTest) {
+  const Cube cube(vec3(0.42, 0.0, 0.06), 0.28, Material{}, 0);
+  int blocked = 0;
+  CompareSegmentsWithRays(cube, vec3(0.42, 0.0, 0.06), vec3(0.70, 0.28, 0.34), 0.6, Pcg32(5, 5),
+                          blocked);
+  EXPECT_GT(blocked, 5000);  // the segments do meet the cube
 }
 
 TEST(Slabs, SphereSegmentTestAgreesWithTheRayTest) {
   const Sphere sphere(vec3(0.22, 0.18, 0.40), 0.18, Material{}, 0);
-  Pcg32 rng(6, 6);
   int blocked = 0;
-  for (int i = 0; i < 100000; ++i) {
-    const vec3 o(Coordinate(rng, 0.04, 0.40), Coordinate(rng, 0.0, 0.36),
-                 Coordinate(rng, 0.22, 0.58));
-    const vec3 d = Direction(rng);
-    const double length = 0.8 * rng.Uniform();
-    Hit hit;
-    const bool closeToAnEnd =
-        sphere.Intersect(o, d, kInfinity, hit) && std::abs(hit.t - length) < 1e-12;
-    if (closeToAnEnd) continue;
-    const bool segment = sphere.IntersectsSegment(o, length * d);
-    ASSERT_EQ(segment, sphere.Intersect(o, d, length, hit));
-    blocked += segment ? 1 : 0;
-  }
+  CompareSegmentsWithRays(sphere, vec3(0.04, 0.0, 0.22), vec3(0.40, 0.36, 0.58), 0.8, Pcg32(6, 6),
+                          blocked);
   EXPECT_GT(blocked, 3000);  // the segments do meet the sphere
 }
 

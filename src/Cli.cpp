@@ -81,7 +81,7 @@ void AddRenderOptions(CLI::App* render, RenderArgs& args, bool outputs) {
           "--spp", args.spp,
           "Rays per pixel, through random points inside it; default: the scene's "
           "value for the mode (with --time: rays per pass; default: passes of 1, 2, 4, ... "
-          "rays, as many as the time left allows)")
+          "rays, each fitting in half the time left)")
       ->check(CLI::Range(1, 1 << 20));
   if (outputs) {
     render

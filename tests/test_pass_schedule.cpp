@@ -14,12 +14,14 @@ struct Simulated {
 };
 
 // A budgeted render whose passes cost `overhead` seconds plus `perRay` seconds per ray
-// per pixel, scheduled by `schedule`.
-Simulated Simulate(PassSchedule schedule, double budget, double perRay, double overhead) {
+// per pixel, scheduled by `schedule`; every other pass runs `slowdown` times slower
+// (another process on the cores).
+Simulated Simulate(PassSchedule schedule, double budget, double perRay, double overhead,
+                   double slowdown = 1.0) {
   Simulated s;
   int rays = schedule.FirstRays();
   while (rays > 0) {
-    const double pass = overhead + perRay * rays;
+    const double pass = (overhead + perRay * rays) * (s.passes % 2 == 1 ? slowdown : 1.0);
     s.seconds += pass;
     s.rays += rays;
     ++s.passes;
@@ -40,10 +42,10 @@ TEST(PassSchedule, DoublesFromOne) {
 TEST(PassSchedule, TakesNoMoreThanTheTimeLeftAllows) {
   PassSchedule schedule;
   EXPECT_EQ(schedule.Next(1, 0.01, 100.0), 2);  // the first pass: 0.01 s of set-up at most
-  // 0.01 s per ray per pixel, 0.265 s left less 0.01 s: 25 rays fit, not 32.
-  EXPECT_EQ(schedule.Next(16, 0.16, 0.265), 25);
-  EXPECT_EQ(schedule.Next(16, 0.16, 0.0201), 1);
-  EXPECT_EQ(schedule.Next(16, 0.16, 0.0199), 0);  // not even one ray: stop
+  // 0.01 s per ray per pixel, half of 0.53 s left less 0.01 s: 25 rays fit, not 32.
+  EXPECT_EQ(schedule.Next(16, 0.16, 0.53), 25);
+  EXPECT_EQ(schedule.Next(16, 0.16, 0.0402), 1);
+  EXPECT_EQ(schedule.Next(16, 0.16, 0.0398), 0);  // not even one ray: stop
   EXPECT_EQ(schedule.Next(16, 0.16, -1.0), 0);
 }
 
@@ -64,6 +66,10 @@ TEST(PassSchedule, FillsTheBudgetInFewPassesWithoutOverspending) {
   }
   const Simulated s = Simulate(PassSchedule(), 10.0, 1e-3, 2e-3);
   EXPECT_GE(s.rays, 9500);
+  // A pass up to 1.9 times slower than the one before still ends within the budget.
+  for (const double overhead : {0.0, 2e-3, 0.5}) {
+    EXPECT_LE(Simulate(PassSchedule(), 10.0, 1e-3, overhead, 1.9).seconds, 10.0) << overhead;
+  }
   const Simulated ones = Simulate(PassSchedule(1), 10.0, 1e-3, 2e-3);
   EXPECT_LE(ones.seconds, 10.0);
   EXPECT_LT(ones.rays, 3400);

@@ -1,10 +1,12 @@
 // The rays per pixel of each pass of a render against a time budget (`--time`).
 // A pass of one ray per pixel gives a first image at once but runs at 70-85% of the
 // throughput of a pass of 64 (each pass seeds every pixel again and ends with a wait for
-// the slowest thread), so passes double: 1, 2, 4, ... A pass takes no more rays than the
-// time left is predicted to allow. The prediction for n rays, n c + o, overestimates:
-// c is the last pass's seconds per ray per pixel (its set-up included) and o the first
-// pass's seconds (all of a pass's set-up and more), so the budget is not overspent.
+// the slowest thread), so passes double: 1, 2, 4, ... A pass takes no more rays than
+// fit in half the time left. The prediction for n rays, n c + o, overestimates: c is the
+// last pass's seconds per ray per pixel (its set-up included) and o the first pass's
+// seconds (all of a pass's set-up and more); the half leaves room for a pass that runs
+// slower than the one before (another process on the cores), so the last passes shrink
+// and the budget is not overspent. At most two one-ray passes' time is left unused.
 #pragma once
 
 #include <algorithm>
@@ -24,13 +26,13 @@ class PassSchedule {
 
   // Records the pass just finished (`lastRays` rays per pixel in `lastSeconds`) and
   // returns the next pass's rays per pixel with `secondsLeft` of the budget left; 0 when
-  // not even the smallest pass fits.
+  // not even the smallest pass fits in half of it.
   int Next(int lastRays, double lastSeconds, double secondsLeft) {
     lastSeconds = std::max(lastSeconds, 0.0);
     if (fixedRays_ > 0) return lastSeconds <= secondsLeft ? fixedRays_ : 0;
     if (overhead_ < 0.0) overhead_ = lastSeconds;  // the first pass
     const double perRay = lastSeconds / std::max(lastRays, 1);
-    const double time = secondsLeft - overhead_;
+    const double time = 0.5 * secondsLeft - overhead_;
     const double fits = perRay > 0.0 ? std::floor(time / perRay) : double{kMaxRays};
     const double rays = std::min({2.0 * lastRays, fits, double{kMaxRays}});
     return time >= 0.0 && rays >= 1.0 ? static_cast<int>(rays) : 0;

@@ -13,7 +13,8 @@ namespace {
 
 void RenderPixels(benchmark::State& state, const Integrator& integrator, int spp) {
   const Scene& scene = CanonicalScene();
-  const Camera camera(scene.wall, scene.camera.eye, 256, 256);
+  Camera camera(scene.wall, scene.camera.eye, 256, 256);
+  camera.PrepareShafts(scene, integrator.ShadowLights());  // as the renderer does
   RayTree trees;
   RenderStats stats;
   int i = 0;
@@ -25,6 +26,7 @@ void RenderPixels(benchmark::State& state, const Integrator& integrator, int spp
     const auto index = static_cast<int>((static_cast<unsigned>(i) * 40503U) & 0xffffU);
     const int x = index % 256;
     const int y = index / 256;
+    pixel.SetShaft(camera.PixelAt(x, y).Shaft());
     pixel.Render(camera, x, y, spp, integrator, rng, trees, stats);
     benchmark::DoNotOptimize(pixel);
     ++i;

@@ -40,6 +40,8 @@ Row Measure(const BenchArgs& args, const std::string& mode, int threads) {
   for (int i = 0; i < args.repeat; ++i) {
     camera.Clear();
     const auto start = std::chrono::steady_clock::now();
+    camera.PrepareShafts(s.scene, integrator->ShadowLights(),
+                         threads);  // timed: part of the render's cost
     const RenderStats stats = camera.Render(*integrator, options);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

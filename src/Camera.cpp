@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "glint/ImageIO.hpp"
+#include "glint/Scene.hpp"
 
 namespace glint {
 
@@ -111,6 +112,30 @@ RenderStats Camera::Render(const Integrator& integrator, const RenderOptions& op
   if (options.progress)
     options.progress(static_cast<std::size_t>(count), static_cast<std::size_t>(count));
   return total;
+}
+
+void Camera::PrepareShafts(const Scene& scene, PixelShaft::Lights lights, int threads) {
+  // Blocks of 4 x 4 pixels first: a block whose shaft is clear passes that on to all
+  // its pixels (their shafts lie inside it); in the others each pixel works out what
+  // its block did not know. (Measured: quadtrees from 8 or 16 pixels were no faster.)
+  constexpr int kBlock = 4;
+  const int columns = (width_ + kBlock - 1) / kBlock;
+  const int blocks = columns * ((height_ + kBlock - 1) / kBlock);
+#pragma omp parallel for schedule(dynamic, 16) num_threads(threads > 0 ? threads : MaxThreads())
+  for (int b = 0; b < blocks; ++b) {
+    const int x0 = (b % columns) * kBlock;
+    const int y0 = (b / columns) * kBlock;
+    const int x1 = std::min(width_, x0 + kBlock);
+    const int y1 = std::min(height_, y0 + kBlock);
+    const PixelShaft block = PixelShaft::Compute(scene, *this, lights, x0, y0, x1, y1, {});
+    const bool clear = block.Clear(scene, lights);
+    for (int y = y0; y < y1; ++y) {
+      for (int x = x0; x < x1; ++x) {
+        pixels_[Index(x, y)].SetShaft(
+            clear ? block : PixelShaft::Compute(scene, *this, lights, x, y, x + 1, y + 1, block));
+      }
+    }
+  }
 }
 
 void Camera::Clear() {

@@ -23,9 +23,9 @@ MonteCarloIntegrator::MonteCarloIntegrator(const Scene& scene, MonteCarloOptions
   }
 }
 
-Colour MonteCarloIntegrator::Trace(RayTree& tree, std::uint32_t root, Pcg32& rng,
-                                   RenderStats& stats) const {
-  return TraceNode(tree, root, root, rng, stats);
+Colour MonteCarloIntegrator::Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,
+                                   Pcg32& rng, RenderStats& stats) const {
+  return TraceNode(tree, root, root, rng, stats, shaft);
 }
 
 double MonteCarloIntegrator::EmissionWeight(const Ray& ray, vec3 lightPoint) const {
@@ -44,11 +44,13 @@ double MonteCarloIntegrator::EmissionWeight(const Ray& ray, vec3 lightPoint) con
 }
 
 Colour MonteCarloIntegrator::DirectLight(const Hit& hit, vec3 d, vec3 n, double misBranches,
-                                         Pcg32& rng, RenderStats& stats) const {
+                                         Pcg32& rng, RenderStats& stats, bool unoccluded) const {
   const Material& m = *hit.material;
   const double u = rng.Uniform();
   const double v = rng.Uniform();
-  if (m.type == MaterialType::Lambertian) return DirectLightLambertian(hit, n, u, v, stats);
+  if (m.type == MaterialType::Lambertian) {
+    return DirectLightLambertian(hit, n, u, v, stats, unoccluded);
+  }
   const LightSample ls = light_.SampleLi(hit.point, u, v);
   const double cosTheta = glm::dot(n, ls.wi);
   if (ls.invPdf == 0.0 || cosTheta <= 0.0) return Colour(0.0);
@@ -56,7 +58,11 @@ Colour MonteCarloIntegrator::DirectLight(const Hit& hit, vec3 d, vec3 n, double 
   const Colour f = phong.f;
   if (f == Colour(0.0)) return Colour(0.0);
   ++stats.shadowRays;
-  if (scene_.Occluded(OffsetRayOrigin(hit.point, n, ls.wi), ls.point)) return Colour(0.0);
+  if (unoccluded) {
+    ++stats.shadowRaysByShaft;
+  } else if (scene_.Occluded(OffsetRayOrigin(hit.point, n, ls.wi), ls.point)) {
+    return Colour(0.0);
+  }
   double w = 1.0;
   if (misBranches > 0.0) {  // MIS against `misBranches` BRDF samples
     w = PowerHeuristic(ls.pdf, misBranches * phong.pdf);
@@ -65,7 +71,7 @@ Colour MonteCarloIntegrator::DirectLight(const Hit& hit, vec3 d, vec3 n, double 
 }
 
 Colour MonteCarloIntegrator::DirectLightLambertian(const Hit& hit, vec3 n, double u, double v,
-                                                   RenderStats& stats) const {
+                                                   RenderStats& stats, bool unoccluded) const {
   // The same estimator as DirectLight's, Le f cos(theta) / p(w) with p(w) = r^2 /
   // (cos(theta_y) A), for the BRDF rho / pi that needs no direction: with x = y - p
   // unnormalised, cos(theta) = n.x / r and cos(theta_y) = -n_y.x / r, so
@@ -77,7 +83,11 @@ Colour MonteCarloIntegrator::DirectLightLambertian(const Hit& hit, vec3 n, doubl
   const double cosLightNumerator = -glm::dot(light_.Normal(), x);
   if (cosNumerator <= 0.0 || cosLightNumerator <= 0.0) return Colour(0.0);
   ++stats.shadowRays;
-  if (scene_.Occluded(OffsetRayOrigin(hit.point, n, x), y)) return Colour(0.0);
+  if (unoccluded) {
+    ++stats.shadowRaysByShaft;  // answered by the pixel's shaft: nothing can block it
+  } else if (scene_.Occluded(OffsetRayOrigin(hit.point, n, x), y)) {
+    return Colour(0.0);
+  }
   const double r2 = glm::dot(x, x);
   const double geometry = cosNumerator * cosLightNumerator * light_.Area() / (r2 * r2);
   return light_.Radiance() * hit.material->reflectance * (kInvPi * geometry);
@@ -142,12 +152,15 @@ int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, Pcg32&
 }
 
 Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::uint32_t root,
-                                       Pcg32& rng, RenderStats& stats) const {
+                                       Pcg32& rng, RenderStats& stats, PixelShaft shaft) const {
   // A reference, not a copy (copying the node cost ~10% of the render): valid until
   // AddChildren below may move the nodes; what is needed after that is read first.
   const Ray& ray = tree[index];
   Hit hit;
-  if (!scene_.Intersect(ray.start, ray.direction, hit, /*withAreaLight=*/true)) {
+  const bool found = shaft.roomOnly
+                         ? scene_.IntersectRoom(ray.start, ray.direction, hit)
+                         : scene_.Intersect(ray.start, ray.direction, hit, /*withAreaLight=*/true);
+  if (!found) {
     tree[index].end = ray.start;
     tree[index].final = true;  // out through the open front: radiance 0
     tree[index].colour = Colour(0.0);
@@ -168,7 +181,7 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::
   // Next-event estimation at walls (always) and Phong objects (unless BRDF-only).
   using Strategy = MonteCarloOptions::Strategy;
   if (m.type == MaterialType::Lambertian) {
-    colour += DirectLight(hit, ray.direction, n, 0.0, rng, stats);
+    colour += DirectLight(hit, ray.direction, n, 0.0, rng, stats, shaft.areaLightVisible);
     // The design's terminal walls end most paths: no child, nothing else to do.
     if (options_.walls == MonteCarloOptions::Walls::Terminal) {
       tree[index].final = true;

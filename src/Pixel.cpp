@@ -22,7 +22,7 @@ void Pixel::Render(const Camera& camera, int x, int y, int rays, const Integrato
     ray.kind = RayKind::Camera;
     const std::uint32_t root = trees.Add(ray);
     ++stats.cameraRays;
-    const Colour c = integrator.Trace(trees, root, rng, stats);
+    const Colour c = integrator.Trace(trees, root, shaft_, rng, stats);
     if (!IsFinite(c)) {  // counted and dropped, never averaged in
       ++stats.nonFiniteSamples;
       continue;

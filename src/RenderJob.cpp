@@ -159,6 +159,8 @@ RenderResult RunPasses(Camera& camera, const Integrator& integrator, const Rende
   const auto elapsed = [&]() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
+  camera.PrepareShafts(s.scene, integrator.ShadowLights(),
+                       args.threads);  // timed: part of the render's cost
   const bool progressive = args.timeBudget > 0.0;
   RenderResult r;
   RenderOptions options;
@@ -211,6 +213,7 @@ std::string StatsJson(const RenderArgs& args, const RenderSetup& s, const Camera
   j["mrays_per_second"] = static_cast<double>(st.TotalRays()) / seconds / 1e6;
   j["camera_paths_per_second"] = static_cast<double>(st.cameraRays) / seconds;
   j["nonfinite_samples"] = st.nonFiniteSamples;
+  j["shadow_rays_answered_by_shaft"] = st.shadowRaysByShaft;
   j["interrupted"] = r.interrupted;
   j["peak_rss_mib"] = PeakResidentMiB();
   if (args.mode == "mc") {

@@ -7,24 +7,29 @@ namespace glint {
 WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth)
     : scene_(scene), maxDepth_(maxDepth) {}
 
-Colour WhittedIntegrator::Trace(RayTree& tree, std::uint32_t root, Pcg32& /*rng*/,
-                                RenderStats& stats) const {
-  return TraceNode(tree, root, stats);
+Colour WhittedIntegrator::Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,
+                                Pcg32& /*rng*/, RenderStats& stats) const {
+  return TraceNode(tree, root, stats, shaft);
 }
 
-Colour WhittedIntegrator::LocalLight(const Hit& hit, vec3 d, RenderStats& stats) const {
+Colour WhittedIntegrator::LocalLight(const Hit& hit, vec3 d, RenderStats& stats,
+                                     std::uint8_t visible) const {
   const Material& m = *hit.material;
   // Light arrives on the side the ray came from.
   const vec3 n = glm::dot(d, hit.normal) < 0.0 ? hit.normal : -hit.normal;
   Colour sum(0.0);
-  for (const PointLight& light : scene_.pointLights) {
+  for (std::size_t i = 0; i < scene_.pointLights.size(); ++i) {
+    const PointLight& light = scene_.pointLights[i];
     vec3 l = light.position - hit.point;
     const double r2 = glm::dot(l, l);
     l /= std::sqrt(r2);
     const double cosTheta = glm::dot(n, l);
     if (cosTheta <= 0.0) continue;
     ++stats.shadowRays;
-    if (!scene_.VisibleThroughTransparent(OffsetRayOrigin(hit.point, n, l), light.position)) {
+    if (i < PixelShaft::kMaxPointLights && ((visible >> i) & 1U) != 0) {
+      ++stats.shadowRaysByShaft;  // answered by the pixel's shaft: nothing opaque between
+    } else if (!scene_.VisibleThroughTransparent(OffsetRayOrigin(hit.point, n, l),
+                                                 light.position)) {
       continue;
     }
     const Colour irradiance = light.intensity * (cosTheta / r2);  // E = I cos(theta) / r^2
@@ -89,11 +94,14 @@ std::uint32_t WhittedIntegrator::SpawnChildren(RayTree& tree, std::uint32_t inde
   return count;
 }
 
-Colour WhittedIntegrator::TraceNode(RayTree& tree, std::uint32_t index, RenderStats& stats) const {
+Colour WhittedIntegrator::TraceNode(RayTree& tree, std::uint32_t index, RenderStats& stats,
+                                    PixelShaft shaft) const {
   const vec3 origin = tree[index].start;
   const vec3 d = tree[index].direction;
   Hit hit;
-  if (!scene_.Intersect(origin, d, hit, /*withAreaLight=*/false)) {
+  const bool found = shaft.roomOnly ? scene_.IntersectRoom(origin, d, hit)
+                                    : scene_.Intersect(origin, d, hit, /*withAreaLight=*/false);
+  if (!found) {
     // Left the room through the open front: radiance 0.
     tree[index].final = true;
     tree[index].end = origin;
@@ -103,7 +111,7 @@ Colour WhittedIntegrator::TraceNode(RayTree& tree, std::uint32_t index, RenderSt
   tree[index].end = hit.point;
   tree[index].object = hit.object;
 
-  Colour colour = LocalLight(hit, d, stats);
+  Colour colour = LocalLight(hit, d, stats, shaft.pointLightsVisible);
   // Walls spawn nothing; the depth limit counts ray iterations, the camera ray being
   // the first.
   std::uint32_t count = 0;

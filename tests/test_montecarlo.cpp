@@ -33,7 +33,7 @@ MeanAndError EstimateRadiance(const MonteCarloIntegrator& integrator, vec3 start
     ray.start = start;
     ray.direction = glm::normalize(d);
     const std::uint32_t root = tree.Add(ray);
-    m.Add(integrator.Trace(tree, root, rng, stats)[channel]);
+    m.Add(integrator.Trace(tree, root, PixelShaft{}, rng, stats)[channel]);
   }
   return m;
 }

@@ -35,7 +35,7 @@ Colour TraceOnce(const Integrator& integrator, vec3 start, vec3 d, Pcg32& rng, R
   Ray ray;
   ray.start = start;
   ray.direction = glm::normalize(d);
-  return integrator.Trace(tree, tree.Add(ray), rng, stats);
+  return integrator.Trace(tree, tree.Add(ray), PixelShaft{}, rng, stats);
 }
 
 TEST(Stability, GlassOfIndexOneLeavesTheWhittedImageUnchanged) {
@@ -167,7 +167,7 @@ void CheckRaysInside(const Scene& scene, const std::string& name, vec3 centre, d
     ray.start = start;
     ray.direction = d;
     ray.inside = true;
-    const Colour c = integrator.Trace(tree, tree.Add(ray), rng, stats);
+    const Colour c = integrator.Trace(tree, tree.Add(ray), PixelShaft{}, rng, stats);
     ASSERT_TRUE(IsFinite(c));
     const Ray& root = tree[0];
     double weights = 0.0;

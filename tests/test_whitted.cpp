@@ -18,7 +18,7 @@ RayTree TraceOne(const Integrator& integrator, vec3 start, vec3 d, Colour* colou
   const std::uint32_t root = tree.Add(ray);
   Pcg32 rng(1, 1);
   RenderStats stats;
-  const Colour c = integrator.Trace(tree, root, rng, stats);
+  const Colour c = integrator.Trace(tree, root, PixelShaft{}, rng, stats);
   if (colour) *colour = c;
   return tree;
 }

@@ -18,6 +18,8 @@
 
 namespace glint {
 
+class Scene;
+
 struct RenderOptions {
   int raysPerPixel = 1;  // in this pass
   std::uint64_t seed = 1;
@@ -59,6 +61,12 @@ class Camera {
   // seed and the pass only, never on the number of threads: each pixel has its own
   // random stream for each pass.
   RenderStats Render(const Integrator& integrator, const RenderOptions& options);
+  // Works out, for every pixel, what its rays will and will not meet in `scene`
+  // (PixelShaft): the integrators then skip the tests whose answer is known. The
+  // image is the same with or without; call it again if the scene's geometry changes.
+  // `lights`: the shadow rays the integrator casts (Integrator::ShadowLights).
+  void PrepareShafts(const Scene& scene, PixelShaft::Lights lights, int threads = 0);
+
   // Forgets all passes.
   void Clear();
 

@@ -29,6 +29,11 @@ class Cube {
 
   vec3 Position() const { return position_; }
   double Size() const { return size_; }
+  vec3 Centre() const { return centre_; }
+  // Support function h(n) = max over the cube of n.x (shaft culling).
+  double Support(vec3 n) const {
+    return glm::dot(n, centre_) + 0.5 * size_ * (std::abs(n.x) + std::abs(n.y) + std::abs(n.z));
+  }
   const Material& GetMaterial() const { return material_; }
   int Object() const { return object_; }
   // In IntersectSlabs' order: -x, +x, -y, +y, -z, +z.

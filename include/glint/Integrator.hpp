@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "glint/Math.hpp"
+#include "glint/PixelShaft.hpp"
 #include "glint/RayTree.hpp"
 #include "glint/RenderStats.hpp"
 #include "glint/Rng.hpp"
@@ -19,8 +20,13 @@ class Integrator {
   virtual ~Integrator() = default;
 
   // Traces tree[root] (start, direction, importance set) and fills in its colour and
-  // its subtree. Returns the colour.
-  virtual Colour Trace(RayTree& tree, std::uint32_t root, Pcg32& rng, RenderStats& stats) const = 0;
+  // its subtree. Returns the colour. `shaft` is what the pixel that shot the camera ray
+  // knows in advance (PixelShaft{} for any other ray: nothing).
+  virtual Colour Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft, Pcg32& rng,
+                       RenderStats& stats) const = 0;
+
+  // The shadow rays it casts, for Camera::PrepareShafts.
+  virtual PixelShaft::Lights ShadowLights() const = 0;
 };
 
 }  // namespace glint

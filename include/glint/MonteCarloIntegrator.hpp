@@ -30,19 +30,23 @@ class MonteCarloIntegrator final : public Integrator {
   // Throws std::invalid_argument if the scene has no area light.
   MonteCarloIntegrator(const Scene& scene, MonteCarloOptions options);
 
-  Colour Trace(RayTree& tree, std::uint32_t root, Pcg32& rng, RenderStats& stats) const override;
+  Colour Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft, Pcg32& rng,
+               RenderStats& stats) const override;
+  PixelShaft::Lights ShadowLights() const override { return PixelShaft::Lights::Area; }
 
   // Direct light at a surface point from one random point on the light:
   // Le f cos(theta) / p(w), with f the BRDF for the incident direction d.
+  // `unoccluded`: the hit is known to see all of the light (PixelShaft::areaLightVisible),
+  // so the shadow ray needs no test.
   Colour DirectLight(const Hit& hit, vec3 d, vec3 n, double misBranches, Pcg32& rng,
-                     RenderStats& stats) const;
+                     RenderStats& stats, bool unoccluded = false) const;
 
   const MonteCarloOptions& Options() const { return options_; }
 
  private:
   // DirectLight at a Lambertian surface, for the light point of the random numbers u, v.
-  Colour DirectLightLambertian(const Hit& hit, vec3 n, double u, double v,
-                               RenderStats& stats) const;
+  Colour DirectLightLambertian(const Hit& hit, vec3 n, double u, double v, RenderStats& stats,
+                               bool unoccluded) const;
 
   struct Candidate {
     vec3 direction;
@@ -52,8 +56,9 @@ class MonteCarloIntegrator final : public Integrator {
     bool inside;
   };
 
+  // `shaft`: what is known in advance of this ray (the camera ray's pixel), or nothing.
   Colour TraceNode(RayTree& tree, std::uint32_t index, std::uint32_t root, Pcg32& rng,
-                   RenderStats& stats) const;
+                   RenderStats& stats, PixelShaft shaft = {}) const;
   // How much of the light's emission a ray that hit it counts: 1, an MIS weight, or 0
   // where next-event estimation has counted it already.
   double EmissionWeight(const Ray& ray, vec3 lightPoint) const;

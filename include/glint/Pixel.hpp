@@ -9,6 +9,7 @@
 
 #include "glint/Integrator.hpp"
 #include "glint/Math.hpp"
+#include "glint/PixelShaft.hpp"
 #include "glint/RayTree.hpp"
 #include "glint/RenderStats.hpp"
 #include "glint/Rng.hpp"
@@ -28,13 +29,22 @@ class Pixel {
               Pcg32& rng, RayTree& trees, RenderStats& stats, bool keepTrees = false,
               const std::atomic<bool>* cancel = nullptr);
 
+  // What the pixel knows of its rays in advance (Camera::PrepareShafts); nothing until then.
+  void SetShaft(PixelShaft shaft) { shaft_ = shaft; }
+  PixelShaft Shaft() const { return shaft_; }
+
   Colour Radiance() const { return samples_ > 0 ? sum_ / static_cast<double>(samples_) : sum_; }
   std::uint64_t Samples() const { return samples_; }
-  void Clear() { *this = Pixel(); }
+  // Forgets the samples (not the shaft, which depends on the geometry only).
+  void Clear() {
+    sum_ = Colour(0.0);
+    samples_ = 0;
+  }
 
  private:
   Colour sum_{0.0};  // sum of the finite samples' colours
   std::uint64_t samples_ = 0;
+  PixelShaft shaft_;
 };
 
 }  // namespace glint

@@ -29,6 +29,12 @@ class Rectangle {
   vec3 Normal() const { return normal_; }
   double Area() const { return area_; }
   vec3 PointFromUV(double u, double v) const { return corner_ + u * edgeA_ + v * edgeB_; }
+  vec3 Centre() const { return PointFromUV(0.5, 0.5); }
+  // Support function h(n) = max over the rectangle of n.x: the best corner (shaft culling).
+  double Support(vec3 n) const {
+    return glm::dot(n, corner_) + std::max(0.0, glm::dot(n, edgeA_)) +
+           std::max(0.0, glm::dot(n, edgeB_));
+  }
 
  private:
   vec3 corner_{0.0};

@@ -12,6 +12,8 @@ struct RenderStats {
   std::uint64_t diffuseRays = 0;
   std::uint64_t shadowRays = 0;
   std::uint64_t nonFiniteSamples = 0;  // NaN or Inf samples, dropped before averaging
+  // Of shadowRays, those whose answer (unblocked) the pixel's shaft knew in advance.
+  std::uint64_t shadowRaysByShaft = 0;
 
   std::uint64_t TotalRays() const {
     return cameraRays + reflectedRays + refractedRays + diffuseRays + shadowRays;
@@ -23,6 +25,7 @@ struct RenderStats {
     diffuseRays += o.diffuseRays;
     shadowRays += o.shadowRays;
     nonFiniteSamples += o.nonFiniteSamples;
+    shadowRaysByShaft += o.shadowRaysByShaft;
     return *this;
   }
 };

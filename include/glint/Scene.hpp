@@ -44,6 +44,15 @@ class Scene {
   // Closest hit along the ray. With `withAreaLight`, the light rectangle is part of the
   // scene and wins over the ceiling it lies in (spec: "a ray hits the light").
   bool Intersect(vec3 origin, vec3 direction, Hit& hit, bool withAreaLight) const;
+  // The same for a ray known to meet no object and not the light (PixelShaft::roomOnly):
+  // the walls only. Same result as Intersect for such a ray.
+  bool IntersectRoom(vec3 origin, vec3 direction, Hit& hit) const {
+    double t = kInfinity;
+    int side = 0;
+    if (!wall.Nearer(origin, direction, t, side)) return false;
+    wall.FillHit(origin, direction, t, side, hit);
+    return true;
+  }
 
   // Whitted shadow ray from p toward q: blocked by opaque objects only, transparent
   // objects let it through (the design's rule). The room is convex, so no wall can

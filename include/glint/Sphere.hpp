@@ -26,6 +26,8 @@ class Sphere {
 
   vec3 Centre() const { return centre_; }
   double Radius() const { return radius_; }
+  // Support function h(n) = max over the sphere of n.x, for unit n (shaft culling).
+  double Support(vec3 n) const { return glm::dot(n, centre_) + radius_; }
   const Material& GetMaterial() const { return material_; }
   int Object() const { return object_; }
 

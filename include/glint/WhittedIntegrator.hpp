@@ -13,17 +13,23 @@ class WhittedIntegrator final : public Integrator {
  public:
   WhittedIntegrator(const Scene& scene, int maxDepth);
 
-  Colour Trace(RayTree& tree, std::uint32_t root, Pcg32& rng, RenderStats& stats) const override;
+  Colour Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft, Pcg32& rng,
+               RenderStats& stats) const override;
+  PixelShaft::Lights ShadowLights() const override { return PixelShaft::Lights::Point; }
 
   // The local term at a hit seen along direction d: for every visible point light of
   // intensity I at distance r and angle theta, with E = I cos(theta) / r^2,
   //   rho * E * (kd / pi + ks (n + 2) / (2 pi) max(0, R . -d)^n),
   // R being the light's mirror direction. For a wall (kd = 1, ks = 0) this is the
   // spec's rho / pi * I cos(theta) / r^2.
-  Colour LocalLight(const Hit& hit, vec3 d, RenderStats& stats) const;
+  // Point light i is taken as visible without a shadow ray if bit i of `visible` is
+  // set (PixelShaft::pointLightsVisible).
+  Colour LocalLight(const Hit& hit, vec3 d, RenderStats& stats, std::uint8_t visible = 0) const;
 
  private:
-  Colour TraceNode(RayTree& tree, std::uint32_t index, RenderStats& stats) const;
+  // `shaft`: what is known in advance of this ray (the camera ray's pixel), or nothing.
+  Colour TraceNode(RayTree& tree, std::uint32_t index, RenderStats& stats,
+                   PixelShaft shaft = {}) const;
   // Creates the reflected and refracted children of tree[index] for its hit and
   // returns how many it made.
   std::uint32_t SpawnChildren(RayTree& tree, std::uint32_t index, const Hit& hit,

@@ -157,10 +157,9 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::
   // AddChildren below may move the nodes; what is needed after that is read first.
   const Ray& ray = tree[index];
   Hit hit;
-  const bool found = shaft.roomOnly
-                         ? scene_.IntersectRoom(ray.start, ray.direction, hit)
-                         : scene_.Intersect(ray.start, ray.direction, hit, /*withAreaLight=*/true);
-  if (!found) {
+  if (shaft.roomOnly) {
+    scene_.IntersectRoom(ray.start, ray.direction, shaft.side, hit);
+  } else if (!scene_.Intersect(ray.start, ray.direction, hit, /*withAreaLight=*/true)) {
     tree[index].end = ray.start;
     tree[index].final = true;  // out through the open front: radiance 0
     tree[index].colour = Colour(0.0);

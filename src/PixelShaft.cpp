@@ -71,6 +71,7 @@ PixelShaft PixelShaft::Compute(const Scene& scene, const Camera& camera, Lights 
   }
   PixelShaft result = known;
   result.roomOnly = true;
+  result.side = static_cast<std::int8_t>(side);
 
   if (lights == Lights::Area && scene.light && !known.areaLightVisible) {
     const Rectangle& light = scene.light->Shape();

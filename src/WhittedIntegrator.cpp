@@ -99,9 +99,9 @@ Colour WhittedIntegrator::TraceNode(RayTree& tree, std::uint32_t index, RenderSt
   const vec3 origin = tree[index].start;
   const vec3 d = tree[index].direction;
   Hit hit;
-  const bool found = shaft.roomOnly ? scene_.IntersectRoom(origin, d, hit)
-                                    : scene_.Intersect(origin, d, hit, /*withAreaLight=*/false);
-  if (!found) {
+  if (shaft.roomOnly) {
+    scene_.IntersectRoom(origin, d, shaft.side, hit);
+  } else if (!scene_.Intersect(origin, d, hit, /*withAreaLight=*/false)) {
     // Left the room through the open front: radiance 0.
     tree[index].final = true;
     tree[index].end = origin;

@@ -106,7 +106,7 @@ void CheckShafts(const Scene& scene, PixelShaft::Lights lights, int size, int ra
         Hit full;
         Hit room;
         ASSERT_TRUE(scene.Intersect(camera.Eye(), d, full, true));
-        ASSERT_TRUE(scene.IntersectRoom(camera.Eye(), d, room));
+        scene.IntersectRoom(camera.Eye(), d, shaft.side, room);
         ASSERT_EQ(full.object, room.object) << "pixel " << x << "," << y;
         ASSERT_EQ(full.t, room.t);
         ASSERT_FALSE(full.light);

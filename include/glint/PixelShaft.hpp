@@ -19,6 +19,8 @@ struct PixelShaft {
   // Every camera ray through the pixel meets the same wall first: no object and not
   // the area light stand in the pyramid from the eye to the pixel's patch of wall.
   bool roomOnly = false;
+  // With roomOnly: the wall (Wall::Side) they all meet, well inside its face.
+  std::int8_t side = -1;
   // With roomOnly: no object stands in the hull of that patch and the area light, so
   // next-event estimation from the patch needs no shadow test (the walls block
   // nothing, the room being convex).

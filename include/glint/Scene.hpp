@@ -44,14 +44,10 @@ class Scene {
   // Closest hit along the ray. With `withAreaLight`, the light rectangle is part of the
   // scene and wins over the ceiling it lies in (spec: "a ray hits the light").
   bool Intersect(vec3 origin, vec3 direction, Hit& hit, bool withAreaLight) const;
-  // The same for a ray known to meet no object and not the light (PixelShaft::roomOnly):
-  // the walls only. Same result as Intersect for such a ray.
-  bool IntersectRoom(vec3 origin, vec3 direction, Hit& hit) const {
-    double t = kInfinity;
-    int side = 0;
-    if (!wall.Nearer(origin, direction, t, side)) return false;
-    wall.FillHit(origin, direction, t, side, hit);
-    return true;
+  // The same for a ray known to meet no object and not the light, and to leave the
+  // room through wall `side` (PixelShaft): the same hit as Intersect's, found directly.
+  void IntersectRoom(vec3 origin, vec3 direction, int side, Hit& hit) const {
+    wall.FillHit(origin, direction, wall.DistanceThrough(origin, direction, side), side, hit);
   }
 
   // Whitted shadow ray from p toward q: blocked by opaque objects only, transparent

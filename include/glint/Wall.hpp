@@ -28,6 +28,9 @@ class Wall {
   // is; FillHit then records the hit.
   bool Nearer(vec3 origin, vec3 direction, double& t, int& side) const;
   void FillHit(vec3 origin, vec3 direction, double t, int side, Hit& hit) const;
+  // The distance at which a ray from inside the room, or from in front of it through the
+  // opening, leaves through wall `side`, for a ray known to leave there (Nearer's t).
+  double DistanceThrough(vec3 origin, vec3 direction, int side) const;
 
   vec3 Position() const { return position_; }
   double Size() const { return size_; }
@@ -76,6 +79,14 @@ inline bool Wall::Exit(vec3 o, vec3 d, double& t, int& side) const {
   t = tHit;
   side = kSideOfFace[face];
   return true;
+}
+
+inline double Wall::DistanceThrough(vec3 o, vec3 d, int side) const {
+  // As Exit computes it: gap / |d| along the side's axis.
+  static constexpr std::array<int, kSides> kAxisOfSide = {0, 1, 0, 1, 2};
+  const int a = kAxisOfSide[static_cast<std::size_t>(side)];
+  const double gap = d[a] > 0.0 ? maxCorner_[a] - o[a] : o[a] - position_[a];
+  return gap / std::abs(d[a]);
 }
 
 inline bool Wall::EntersThroughOpening(vec3 o, vec3 d) const {

@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# run-fuzz.sh SOURCE_DIR WORK_DIR [SECONDS]: builds the scene-loader fuzzer with clang
-# (-fsanitize=fuzzer,address,undefined) and runs it for a bounded time on a copy of the
-# seed corpus. Exit 77 (skipped) where clang or libFuzzer is missing.
+# run-fuzz.sh SOURCE_DIR WORK_DIR SECONDS SOURCES: builds the scene-loader fuzzer with
+# clang (-fsanitize=fuzzer,address,undefined) from the library's SOURCES (paths relative
+# to SOURCE_DIR, separated by ';', as CMake lists glint_core's) and runs it for a bounded
+# time on a copy of the seed corpus. Exit 77 (skipped) where clang or libFuzzer is missing.
 set -euo pipefail
 src=$1
 work=$2
-seconds=${3:-30}
+seconds=$3
+IFS=';' read -ra sources <<< "$4"
 if ! command -v clang++ >/dev/null; then
   echo "skipped: clang++ not found"
   exit 77
@@ -13,13 +15,11 @@ fi
 mkdir -p "$work/obj" "$work/corpus" "$work/artifacts"
 flags=(-std=c++20 -O1 -g -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined
        -DGLM_FORCE_XYZW_ONLY -I"$src/include" -isystem /usr/include/stb -w)
-sources=(Camera Cube Fresnel Image ImageIO JsonReader Light MonteCarloIntegrator Pixel Rectangle
-         Scene SceneLoader Sphere StbImageWrite Wall WhittedIntegrator)
 objects=()
 for s in "${sources[@]}"; do
-  obj="$work/obj/$s.o"
-  if [ ! -f "$obj" ] || [ "$src/src/$s.cpp" -nt "$obj" ] || [ -n "$(find "$src/include" -newer "$obj" -name '*.hpp' | head -1)" ]; then
-    clang++ "${flags[@]}" -c "$src/src/$s.cpp" -o "$obj" &
+  obj="$work/obj/$(basename "$s" .cpp).o"
+  if [ ! -f "$obj" ] || [ "$src/$s" -nt "$obj" ] || [ -n "$(find "$src/include" -newer "$obj" -name '*.hpp' | head -1)" ]; then
+    clang++ "${flags[@]}" -c "$src/$s" -o "$obj" &
   fi
   objects+=("$obj")
   # two compilers at a time

@@ -159,9 +159,10 @@ RenderResult RunPasses(Camera& camera, const Integrator& integrator, const Rende
   const auto elapsed = [&]() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
-  camera.PrepareShafts(s.scene, integrator.ShadowLights(),
-                       args.threads);  // timed: part of the render's cost
   const bool progressive = args.timeBudget > 0.0;
+  if (progressive || s.raysPerPass >= PixelShaft::kPaysFromRaysPerPixel) {
+    camera.PrepareShafts(s.scene, integrator.ShadowLights(), args.threads);  // on the clock
+  }
   RenderResult r;
   RenderOptions options;
   options.seed = args.seed;

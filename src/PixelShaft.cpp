@@ -88,8 +88,7 @@ PixelShaft PixelShaft::Compute(const Scene& scene, const Camera& camera, Lights 
     result.areaLightVisible = MissesObjects(shadow, scene, true, margin);
   }
   if (lights == Lights::Point) {
-    const int count = std::min(kMaxPointLights, static_cast<int>(scene.pointLights.size()));
-    for (int i = 0; i < count; ++i) {
+    for (int i = 0; i < CoveredPointLights(scene); ++i) {
       if (known.PointLightVisible(i)) continue;
       const vec3 light = scene.pointLights[static_cast<std::size_t>(i)].position;
       if (MissesObjects(Pyramid(light, patch, patchCentre), scene, false, margin)) {
@@ -101,11 +100,14 @@ PixelShaft PixelShaft::Compute(const Scene& scene, const Camera& camera, Lights 
   return result;
 }
 
+int PixelShaft::CoveredPointLights(const Scene& scene) {
+  return std::min(kMaxPointLights, static_cast<int>(scene.pointLights.size()));
+}
+
 bool PixelShaft::Clear(const Scene& scene, Lights lights) const {
   if (!roomOnly) return false;
   if (lights == Lights::Area) return areaLightVisible || !scene.light;
-  const int count = std::min(kMaxPointLights, static_cast<int>(scene.pointLights.size()));
-  const unsigned all = (1U << count) - 1U;
+  const unsigned all = (1U << CoveredPointLights(scene)) - 1U;
   return (pointLightsVisible & all) == all;
 }
 

@@ -13,7 +13,7 @@ Colour WhittedIntegrator::Trace(RayTree& tree, std::uint32_t root, const PixelSh
 }
 
 Colour WhittedIntegrator::LocalLight(const Hit& hit, vec3 d, RenderStats& stats,
-                                     std::uint8_t visible) const {
+                                     PixelShaft shaft) const {
   const Material& m = *hit.material;
   // Light arrives on the side the ray came from.
   const vec3 n = glm::dot(d, hit.normal) < 0.0 ? hit.normal : -hit.normal;
@@ -26,7 +26,7 @@ Colour WhittedIntegrator::LocalLight(const Hit& hit, vec3 d, RenderStats& stats,
     const double cosTheta = glm::dot(n, l);
     if (cosTheta <= 0.0) continue;
     ++stats.shadowRays;
-    if (i < PixelShaft::kMaxPointLights && ((visible >> i) & 1U) != 0) {
+    if (shaft.PointLightVisible(static_cast<int>(i))) {
       ++stats.shadowRaysByShaft;  // answered by the pixel's shaft: nothing opaque between
     } else if (!scene_.VisibleThroughTransparent(OffsetRayOrigin(hit.point, n, l),
                                                  light.position)) {
@@ -111,7 +111,7 @@ Colour WhittedIntegrator::TraceNode(RayTree& tree, std::uint32_t index, RenderSt
   tree[index].end = hit.point;
   tree[index].object = hit.object;
 
-  Colour colour = LocalLight(hit, d, stats, shaft.pointLightsVisible);
+  Colour colour = LocalLight(hit, d, stats, shaft);
   // Walls spawn nothing; the depth limit counts ray iterations, the camera ray being
   // the first.
   std::uint32_t count = 0;

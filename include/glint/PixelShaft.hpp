@@ -33,6 +33,8 @@ struct PixelShaft {
   // point light i (i < kMaxPointLights).
   std::uint8_t pointLightsVisible = 0;
 
+  // How many of the scene's point lights the bits cover.
+  static int CoveredPointLights(const Scene& scene);
   bool PointLightVisible(int i) const {
     return i < kMaxPointLights && ((pointLightsVisible >> i) & 1U) != 0;
   }

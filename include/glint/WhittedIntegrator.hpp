@@ -22,9 +22,9 @@ class WhittedIntegrator final : public Integrator {
   //   rho * E * (kd / pi + ks (n + 2) / (2 pi) max(0, R . -d)^n),
   // R being the light's mirror direction. For a wall (kd = 1, ks = 0) this is the
   // spec's rho / pi * I cos(theta) / r^2.
-  // Point light i is taken as visible without a shadow ray if bit i of `visible` is
-  // set (PixelShaft::pointLightsVisible).
-  Colour LocalLight(const Hit& hit, vec3 d, RenderStats& stats, std::uint8_t visible = 0) const;
+  // A point light the hit's pixel shaft sees (PixelShaft::PointLightVisible) is taken
+  // as visible without a shadow ray.
+  Colour LocalLight(const Hit& hit, vec3 d, RenderStats& stats, PixelShaft shaft = {}) const;
 
  private:
   // `shaft`: what is known in advance of this ray (the camera ray's pixel), or nothing.

@@ -40,9 +40,7 @@ Row Measure(const BenchArgs& args, const std::string& mode, int threads) {
   for (int i = 0; i < args.repeat; ++i) {
     camera.Clear();
     const auto start = std::chrono::steady_clock::now();
-    if (s.raysPerPass >= PixelShaft::kPaysFromRaysPerPixel) {              // as glint render does
-      camera.PrepareShafts(s.scene, integrator->ShadowLights(), threads);  // on the clock
-    }
+    PrepareShaftsIfTheyPay(camera, *integrator, s, false);  // as glint render does, on the clock
     const RenderStats stats = camera.Render(*integrator, options);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -142,8 +142,7 @@ int RunConverge(const ConvergeArgs& a) {
     camera.Render(*integrator, options);
     camera.Clear();
     const auto prepared = std::chrono::steady_clock::now();
-    camera.PrepareShafts(s.scene, integrator->ShadowLights(),
-                         v.args.threads);  // timed: part of the render's cost
+    PrepareShaftsIfTheyPay(camera, *integrator, s, true);  // timed: part of the render's cost
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - prepared).count();
     std::uint64_t spp = 0;

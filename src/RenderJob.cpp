@@ -150,6 +150,13 @@ std::unique_ptr<Integrator> MakeIntegrator(const RenderArgs& args, const RenderS
   return std::make_unique<WhittedIntegrator>(s.scene, s.mode.maxDepth);
 }
 
+void PrepareShaftsIfTheyPay(Camera& camera, const Integrator& integrator, const RenderSetup& s,
+                            bool manyPasses) {
+  if (manyPasses || s.raysPerPass >= PixelShaft::kPaysFromRaysPerPixel) {
+    camera.PrepareShafts(s.scene, integrator.ShadowLights(), s.threads);
+  }
+}
+
 // One pass, or passes until the time budget would be overspent.
 RenderResult RunPasses(Camera& camera, const Integrator& integrator, const RenderArgs& args,
                        const RenderSetup& s) {
@@ -160,9 +167,7 @@ RenderResult RunPasses(Camera& camera, const Integrator& integrator, const Rende
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   const bool progressive = args.timeBudget > 0.0;
-  if (progressive || s.raysPerPass >= PixelShaft::kPaysFromRaysPerPixel) {
-    camera.PrepareShafts(s.scene, integrator.ShadowLights(), args.threads);  // on the clock
-  }
+  PrepareShaftsIfTheyPay(camera, integrator, s, progressive);  // on the clock
   RenderResult r;
   RenderOptions options;
   options.seed = args.seed;

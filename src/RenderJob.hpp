@@ -59,6 +59,11 @@ RenderSetup Prepare(const RenderArgs& args, bool checkOutputs = true);
 // Refuses an output whose folder is missing or cannot take a new file.
 void CheckWritable(const std::string& path);
 std::unique_ptr<Integrator> MakeIntegrator(const RenderArgs& args, const RenderSetup& s);
+// Camera::PrepareShafts where it pays (PixelShaft::kPaysFromRaysPerPixel): for passes of
+// that many rays per pixel or more, and for `manyPasses` renders, which prepare once for
+// all their passes (--time, converge).
+void PrepareShaftsIfTheyPay(Camera& camera, const Integrator& integrator, const RenderSetup& s,
+                            bool manyPasses);
 // One pass, or passes until args.timeBudget would be overspent.
 RenderResult RunPasses(Camera& camera, const Integrator& integrator, const RenderArgs& args,
                        const RenderSetup& s);

@@ -43,6 +43,16 @@ double MonteCarloIntegrator::EmissionWeight(const Ray& ray, vec3 lightPoint) con
   return PowerHeuristic(ray.pdf, light_.PdfLi(ray.start, lightPoint));
 }
 
+bool MonteCarloIntegrator::ShadowBlocked(vec3 p, vec3 n, vec3 w, vec3 y, bool unoccluded,
+                                         RenderStats& stats) const {
+  ++stats.shadowRays;
+  if (unoccluded) {
+    ++stats.shadowRaysByShaft;  // answered by the pixel's shaft: nothing can block it
+    return false;
+  }
+  return scene_.Occluded(OffsetRayOrigin(p, n, w), y);
+}
+
 Colour MonteCarloIntegrator::DirectLight(const Hit& hit, vec3 d, vec3 n, double misBranches,
                                          Pcg32& rng, RenderStats& stats, bool unoccluded) const {
   const Material& m = *hit.material;
@@ -57,12 +67,7 @@ Colour MonteCarloIntegrator::DirectLight(const Hit& hit, vec3 d, vec3 n, double 
   const PhongValue phong = EvaluatePhong(m, d, n, ls.wi);
   const Colour f = phong.f;
   if (f == Colour(0.0)) return Colour(0.0);
-  ++stats.shadowRays;
-  if (unoccluded) {
-    ++stats.shadowRaysByShaft;
-  } else if (scene_.Occluded(OffsetRayOrigin(hit.point, n, ls.wi), ls.point)) {
-    return Colour(0.0);
-  }
+  if (ShadowBlocked(hit.point, n, ls.wi, ls.point, unoccluded, stats)) return Colour(0.0);
   double w = 1.0;
   if (misBranches > 0.0) {  // MIS against `misBranches` BRDF samples
     w = PowerHeuristic(ls.pdf, misBranches * phong.pdf);
@@ -82,12 +87,7 @@ Colour MonteCarloIntegrator::DirectLightLambertian(const Hit& hit, vec3 n, doubl
   const double cosNumerator = glm::dot(n, x);
   const double cosLightNumerator = -glm::dot(light_.Normal(), x);
   if (cosNumerator <= 0.0 || cosLightNumerator <= 0.0) return Colour(0.0);
-  ++stats.shadowRays;
-  if (unoccluded) {
-    ++stats.shadowRaysByShaft;  // answered by the pixel's shaft: nothing can block it
-  } else if (scene_.Occluded(OffsetRayOrigin(hit.point, n, x), y)) {
-    return Colour(0.0);
-  }
+  if (ShadowBlocked(hit.point, n, x, y, unoccluded, stats)) return Colour(0.0);
   const double r2 = glm::dot(x, x);
   const double geometry = cosNumerator * cosLightNumerator * light_.Area() / (r2 * r2);
   return light_.Radiance() * hit.material->reflectance * (kInvPi * geometry);

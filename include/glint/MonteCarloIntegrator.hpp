@@ -48,6 +48,11 @@ class MonteCarloIntegrator final : public Integrator {
   Colour DirectLightLambertian(const Hit& hit, vec3 n, double u, double v, RenderStats& stats,
                                bool unoccluded) const;
 
+  // Counts the shadow ray from surface point p (normal n, toward w) to the light point y
+  // and says whether an object blocks it; one the pixel's shaft answered (`unoccluded`)
+  // is not tested.
+  bool ShadowBlocked(vec3 p, vec3 n, vec3 w, vec3 y, bool unoccluded, RenderStats& stats) const;
+
   struct Candidate {
     vec3 direction;
     Colour weight;

@@ -1,6 +1,7 @@
 #include "glint/WhittedIntegrator.hpp"
 
 #include "glint/Fresnel.hpp"
+#include "glint/Sampling.hpp"
 
 namespace glint {
 
@@ -36,7 +37,7 @@ Colour WhittedIntegrator::LocalLight(const Hit& hit, vec3 d, RenderStats& stats,
     double brdf = m.whittedDiffuse * kInvPi;
     if (m.whittedSpecular > 0.0) {
       const double cosR = std::max(0.0, glm::dot(Reflect(-l, n), -d));
-      brdf += m.whittedSpecular * (m.exponent + 2.0) / (2.0 * kPi) * std::pow(cosR, m.exponent);
+      brdf += m.whittedSpecular * (m.exponent + 2.0) / (2.0 * kPi) * CosinePower(cosR, m.exponent);
     }
     sum += m.reflectance * brdf * irradiance;
   }

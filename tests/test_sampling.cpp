@@ -52,14 +52,34 @@ TEST(Sampling, PhongLobeMatchesItsPdf) {
 }
 
 TEST(Sampling, PhongSamplerReportsTheDensityItSamplesWith) {
-  Material m;
-  m.exponent = 37.0;
-  Pcg32 rng(2, 3);
-  for (int i = 0; i < 1000; ++i) {
-    const vec3 d = IncidentAt(40.0);
-    const PhongSample s = SamplePhong(m, d, vec3(0, 0, 1), rng.Uniform(), rng.Uniform());
-    ASSERT_NEAR(s.pdf, PhongPdf(m, d, vec3(0, 0, 1), s.direction), 1e-9 * s.pdf);
-    ASSERT_NEAR(glm::length(s.direction), 1.0, 1e-14);
+  // SamplePhong takes the density from its own u1, not from a second power; it must
+  // agree with PhongPdf of the direction it returns, for whole and fractional n.
+  for (const double exponent : {0.0, 0.5, 1.0, 37.0, 100.0, 1e4}) {
+    Material m;
+    m.exponent = exponent;
+    Pcg32 rng(2, 3);
+    for (int i = 0; i < 1000; ++i) {
+      const vec3 d = IncidentAt(40.0);
+      const PhongSample s = SamplePhong(m, d, vec3(0, 0, 1), rng.Uniform(), rng.Uniform());
+      ASSERT_NEAR(s.pdf, PhongPdf(m, d, vec3(0, 0, 1), s.direction), 1e-9 * s.pdf)
+          << "n = " << exponent;
+      ASSERT_NEAR(glm::length(s.direction), 1.0, 1e-14);
+    }
+  }
+}
+
+TEST(Sampling, CosinePowerAgreesWithPow) {
+  Pcg32 rng(5, 6);
+  // Repeated squaring is within n ulp of the correctly rounded power.
+  for (const double n :
+       {0.0, 1.0, 2.0, 3.0, 7.0, 100.0, 101.0, 1023.0, 1024.0, 1025.0, 65535.0, 0.5, 37.25, 2e6}) {
+    const double tolerance = (std::min(n, 1024.0) + 1.0) * 0x1p-52;
+    for (int i = 0; i < 1000; ++i) {
+      const double c = i == 0 ? 1.0 : rng.Uniform();
+      const double expected = std::pow(c, n);
+      ASSERT_NEAR(CosinePower(c, n), expected, tolerance * expected) << c << "^" << n;
+    }
+    EXPECT_EQ(CosinePower(0.0, n), n == 0.0 ? 1.0 : 0.0) << "0^" << n;
   }
 }
 

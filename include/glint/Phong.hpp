@@ -25,7 +25,7 @@ inline PhongSample SamplePhong(const Material& m, vec3 d, vec3 n, double u1, dou
   const Colour weight = cosTheta > 0.0
                             ? m.reflectance * ((m.exponent + 2.0) / (m.exponent + 1.0) * cosTheta)
                             : Colour(0.0);
-  return {psi, PowerCosinePdf(m.exponent, local.z), weight};
+  return {psi, PowerCosinePdfOfSample(m.exponent, u1, local.z), weight};
 }
 
 inline double PhongPdf(const Material& m, vec3 d, vec3 n, vec3 psi) {
@@ -35,7 +35,7 @@ inline double PhongPdf(const Material& m, vec3 d, vec3 n, vec3 psi) {
 inline Colour PhongBrdf(const Material& m, vec3 d, vec3 n, vec3 psi) {
   const double cosAlpha = glm::dot(Reflect(d, n), psi);
   if (cosAlpha <= 0.0 || glm::dot(n, psi) <= 0.0) return Colour(0.0);
-  return m.reflectance * ((m.exponent + 2.0) / (2.0 * kPi) * std::pow(cosAlpha, m.exponent));
+  return m.reflectance * ((m.exponent + 2.0) / (2.0 * kPi) * CosinePower(cosAlpha, m.exponent));
 }
 
 // Both at once, as next-event estimation with MIS needs them: one mirror direction and
@@ -47,7 +47,7 @@ struct PhongValue {
 inline PhongValue EvaluatePhong(const Material& m, vec3 d, vec3 n, vec3 psi) {
   const double cosAlpha = glm::dot(Reflect(d, n), psi);
   if (cosAlpha <= 0.0) return {Colour(0.0), 0.0};
-  const double lobe = std::pow(cosAlpha, m.exponent);
+  const double lobe = CosinePower(cosAlpha, m.exponent);
   const double pdf = (m.exponent + 1.0) / (2.0 * kPi) * lobe;
   if (glm::dot(n, psi) <= 0.0) return {Colour(0.0), pdf};
   return {m.reflectance * ((m.exponent + 2.0) / (2.0 * kPi) * lobe), pdf};

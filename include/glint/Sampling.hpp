@@ -31,6 +31,24 @@ inline double CosineHemispherePdf(double cosTheta) {
   return cosTheta > 0.0 ? cosTheta * kInvPi : 0.0;
 }
 
+// c^n for a lobe's cos^n(alpha), c >= 0. Scenes give whole exponents (the canonical
+// n = 100): by repeated squaring those take 8 multiplications instead of a call to
+// pow. Each squaring doubles the relative error, so it stays below n ulp: 1e-14 for
+// n = 100, 2.3e-13 at the largest n taken this way. Any other exponent goes to pow.
+inline double CosinePower(double c, double n) {
+  if (n >= 0.0 && n <= 1024.0) {
+    auto k = static_cast<unsigned>(n);
+    if (static_cast<double>(k) == n) {
+      double power = 1.0;
+      for (double base = c; k != 0; k >>= 1U, base *= base) {
+        if ((k & 1U) != 0) power *= base;
+      }
+      return power;
+    }
+  }
+  return std::pow(c, n);
+}
+
 // The lobe cos^n(alpha) around +z, on the hemisphere alpha < pi/2:
 // p(w) = (n + 1) / (2 pi) cos^n(alpha), by inverting its CDF: cos(alpha) = u1^(1/(n+1)).
 inline vec3 SamplePowerCosine(double n, double u1, double u2) {
@@ -41,7 +59,12 @@ inline vec3 SamplePowerCosine(double n, double u1, double u2) {
   return {sinAlpha * std::cos(phi), sinAlpha * std::sin(phi), cosAlpha};
 }
 inline double PowerCosinePdf(double n, double cosAlpha) {
-  return cosAlpha > 0.0 ? (n + 1.0) / (2.0 * kPi) * std::pow(cosAlpha, n) : 0.0;
+  return cosAlpha > 0.0 ? (n + 1.0) / (2.0 * kPi) * CosinePower(cosAlpha, n) : 0.0;
+}
+// The same density for a direction SamplePowerCosine drew with this u1, whose z is
+// cosAlpha = (1 - u1)^(1/(n+1)): then cos^n(alpha) = (1 - u1) / cos(alpha), no power.
+inline double PowerCosinePdfOfSample(double n, double u1, double cosAlpha) {
+  return (n + 1.0) / (2.0 * kPi) * ((1.0 - u1) / cosAlpha);
 }
 
 // Power heuristic (beta = 2) for a strategy with density f against one with density g,

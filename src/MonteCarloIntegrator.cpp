@@ -43,24 +43,10 @@ double MonteCarloIntegrator::EmissionWeight(const Ray& ray, vec3 lightPoint) con
   return PowerHeuristic(ray.pdf, light_.PdfLi(ray.start, lightPoint));
 }
 
-bool MonteCarloIntegrator::ShadowBlocked(vec3 p, vec3 n, vec3 w, vec3 y, bool unoccluded,
-                                         RenderStats& stats) const {
-  ++stats.shadowRays;
-  if (unoccluded) {
-    ++stats.shadowRaysByShaft;  // answered by the pixel's shaft: nothing can block it
-    return false;
-  }
-  return scene_.Occluded(OffsetRayOrigin(p, n, w), y);
-}
-
-Colour MonteCarloIntegrator::DirectLight(const Hit& hit, vec3 d, vec3 n, double misBranches,
-                                         Pcg32& rng, RenderStats& stats, bool unoccluded) const {
+Colour MonteCarloIntegrator::DirectLightPhong(const Hit& hit, vec3 d, vec3 n, double misBranches,
+                                              double u, double v, RenderStats& stats,
+                                              bool unoccluded) const {
   const Material& m = *hit.material;
-  const double u = rng.Uniform();
-  const double v = rng.Uniform();
-  if (m.type == MaterialType::Lambertian) {
-    return DirectLightLambertian(hit, n, u, v, stats, unoccluded);
-  }
   const LightSample ls = light_.SampleLi(hit.point, u, v);
   const double cosTheta = glm::dot(n, ls.wi);
   if (ls.invPdf == 0.0 || cosTheta <= 0.0) return Colour(0.0);
@@ -73,24 +59,6 @@ Colour MonteCarloIntegrator::DirectLight(const Hit& hit, vec3 d, vec3 n, double 
     w = PowerHeuristic(ls.pdf, misBranches * phong.pdf);
   }
   return w * ls.Le * f * (cosTheta * ls.invPdf);
-}
-
-Colour MonteCarloIntegrator::DirectLightLambertian(const Hit& hit, vec3 n, double u, double v,
-                                                   RenderStats& stats, bool unoccluded) const {
-  // The same estimator as DirectLight's, Le f cos(theta) / p(w) with p(w) = r^2 /
-  // (cos(theta_y) A), for the BRDF rho / pi that needs no direction: with x = y - p
-  // unnormalised, cos(theta) = n.x / r and cos(theta_y) = -n_y.x / r, so
-  //   Le (rho / pi) (n.x) (-n_y.x) A / r^4      -- no square root, one division.
-  // The walls' hits, most of a render, take this path.
-  const vec3 y = light_.SamplePoint(u, v);
-  const vec3 x = y - hit.point;
-  const double cosNumerator = glm::dot(n, x);
-  const double cosLightNumerator = -glm::dot(light_.Normal(), x);
-  if (cosNumerator <= 0.0 || cosLightNumerator <= 0.0) return Colour(0.0);
-  if (ShadowBlocked(hit.point, n, x, y, unoccluded, stats)) return Colour(0.0);
-  const double r2 = glm::dot(x, x);
-  const double geometry = cosNumerator * cosLightNumerator * light_.Area() / (r2 * r2);
-  return light_.Radiance() * hit.material->reflectance * (kInvPi * geometry);
 }
 
 int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, Pcg32& rng,

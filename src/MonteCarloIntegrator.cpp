@@ -25,7 +25,26 @@ MonteCarloIntegrator::MonteCarloIntegrator(const Scene& scene, MonteCarloOptions
 
 Colour MonteCarloIntegrator::Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,
                                    Pcg32& rng, RenderStats& stats) const {
+  if (shaft.roomOnly && options_.walls == MonteCarloOptions::Walls::Terminal) {
+    // Four camera rays in five: the pixel's shaft holds only the room, so the ray ends
+    // on a known wall and spawns nothing. None of TraceNode's machinery is needed.
+    Ray& ray = tree[root];
+    Hit hit;
+    scene_.IntersectRoom(ray.start, ray.direction, shaft.side, hit);
+    ray.end = hit.point;
+    ray.object = hit.object;
+    return EndAtTerminalWall(ray, hit, FacingNormal(ray.direction, hit.normal), rng, stats,
+                             shaft.areaLightVisible);
+  }
   return TraceNode(tree, root, root, rng, stats, shaft);
+}
+
+Colour MonteCarloIntegrator::EndAtTerminalWall(Ray& ray, const Hit& hit, vec3 n, Pcg32& rng,
+                                               RenderStats& stats, bool unoccluded) const {
+  const Colour colour = DirectLight(hit, ray.direction, n, 0.0, rng, stats, unoccluded);
+  ray.final = true;
+  ray.colour = colour;
+  return colour;
 }
 
 double MonteCarloIntegrator::EmissionWeight(const Ray& ray, vec3 lightPoint) const {
@@ -143,18 +162,16 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::
   }
 
   const Material& m = *hit.material;
-  const vec3 n = glm::dot(ray.direction, hit.normal) < 0.0 ? hit.normal : -hit.normal;
+  const vec3 n = FacingNormal(ray.direction, hit.normal);
   Colour colour(0.0);
   // Next-event estimation at walls (always) and Phong objects (unless BRDF-only).
   using Strategy = MonteCarloOptions::Strategy;
   if (m.type == MaterialType::Lambertian) {
-    colour += DirectLight(hit, ray.direction, n, 0.0, rng, stats, shaft.areaLightVisible);
     // The design's terminal walls end most paths: no child, nothing else to do.
     if (options_.walls == MonteCarloOptions::Walls::Terminal) {
-      tree[index].final = true;
-      tree[index].colour = colour;
-      return colour;
+      return EndAtTerminalWall(tree[index], hit, n, rng, stats, shaft.areaLightVisible);
     }
+    colour += DirectLight(hit, ray.direction, n, 0.0, rng, stats, shaft.areaLightVisible);
   } else if (m.type == MaterialType::Phong && options_.strategy != Strategy::Brdf) {
     const double misBranches =
         options_.strategy == Strategy::Mis ? static_cast<double>(options_.branches) : 0.0;

@@ -184,6 +184,12 @@ void ExpectSameImageWithShafts(const Scene& scene, MakeIntegrator make, int spp)
   }
 }
 
+MonteCarloOptions WithDiffuseWalls() {
+  MonteCarloOptions options;
+  options.walls = MonteCarloOptions::Walls::Diffuse;
+  return options;
+}
+
 TEST(PixelShaft, ImagesAreTheSameWithAndWithout) {
   const Scene scene = CanonicalScene();
   ExpectSameImageWithShafts(
@@ -192,7 +198,64 @@ TEST(PixelShaft, ImagesAreTheSameWithAndWithout) {
       8);
   ExpectSameImageWithShafts(
       scene,
+      [](const Scene& s) { return std::make_unique<MonteCarloIntegrator>(s, WithDiffuseWalls()); },
+      4);
+  ExpectSameImageWithShafts(
+      scene,
       [](const Scene& s) { return std::make_unique<WhittedIntegrator>(s, s.whitted.maxDepth); }, 2);
+}
+
+void ExpectSameNode(const Ray& a, const Ray& b, const std::string& where) {
+  EXPECT_EQ(a.start, b.start) << where;
+  EXPECT_EQ(a.direction, b.direction) << where;
+  EXPECT_EQ(a.end, b.end) << where;
+  EXPECT_EQ(a.weight, b.weight) << where;
+  EXPECT_EQ(a.importance, b.importance) << where;
+  EXPECT_EQ(a.colour, b.colour) << where;
+  EXPECT_EQ(a.pdf, b.pdf) << where;
+  EXPECT_EQ(a.firstChild, b.firstChild) << where;
+  EXPECT_EQ(a.childCount, b.childCount) << where;
+  EXPECT_EQ(a.object, b.object) << where;
+  EXPECT_EQ(a.depth, b.depth) << where;
+  EXPECT_EQ(a.kind, b.kind) << where;
+  EXPECT_EQ(a.final, b.final) << where;
+  EXPECT_EQ(a.inside, b.inside) << where;
+}
+
+// The ray trees a pixel keeps (as `glint tree` does) are the same, node for node, with
+// and without its shaft: the integrators' shortcuts fill in every field of a node.
+TEST(PixelShaft, RayTreesAreTheSameWithAndWithout) {
+  const Scene scene = CanonicalScene();
+  constexpr int kSize = 32;
+  std::vector<std::unique_ptr<Integrator>> integrators;
+  integrators.push_back(std::make_unique<MonteCarloIntegrator>(scene, MonteCarloOptions{}));
+  integrators.push_back(std::make_unique<MonteCarloIntegrator>(scene, WithDiffuseWalls()));
+  integrators.push_back(std::make_unique<WhittedIntegrator>(scene, scene.whitted.maxDepth));
+  for (const auto& integrator : integrators) {
+    Camera camera(scene.wall, scene.camera.eye, kSize, kSize);
+    camera.PrepareShafts(scene, integrator->ShadowLights(), 2);
+    int roomOnly = 0;
+    for (int y = 0; y < kSize; ++y) {
+      for (int x = 0; x < kSize; ++x) {
+        RayTree trees[2];
+        for (int withShaft = 0; withShaft < 2; ++withShaft) {
+          Pixel pixel;
+          if (withShaft == 1) pixel.SetShaft(camera.PixelAt(x, y).Shaft());
+          Pcg32 rng = Pcg32::ForPixel(7, static_cast<std::uint64_t>(y * kSize + x));
+          RenderStats stats;
+          pixel.Render(camera, x, y, 4, *integrator, rng, trees[withShaft], stats, true);
+        }
+        roomOnly += camera.PixelAt(x, y).Shaft().roomOnly ? 1 : 0;
+        ASSERT_EQ(trees[0].Size(), trees[1].Size()) << "pixel " << x << "," << y;
+        for (std::uint32_t i = 0; i < trees[0].Size(); ++i) {
+          ExpectSameNode(trees[0][i], trees[1][i],
+                         "pixel " + std::to_string(x) + "," + std::to_string(y) + " node " +
+                             std::to_string(i));
+        }
+      }
+    }
+    EXPECT_GT(roomOnly, kSize * kSize / 2);  // the shortcuts were taken
+  }
 }
 
 }  // namespace

@@ -24,12 +24,11 @@ class Pcg32 {
     return (xorshifted >> rot) | (xorshifted << ((32U - rot) & 31U));
   }
 
-  // Uniform double in [0, 1): 53 random bits from two draws.
-  double Uniform() {
-    const std::uint64_t hi = NextU32() >> 5U;  // 27 bits
-    const std::uint64_t lo = NextU32() >> 6U;  // 26 bits
-    return static_cast<double>((hi << 26U) | lo) * 0x1.0p-53;
-  }
+  // Uniform double in [0, 1) from one draw: the multiples of 2^-32, exact in a double,
+  // as pbrt-v4 takes 32 bits for a uniform. Finer than any use here needs (a pixel
+  // jitter of 2^-32 pixels, a Phong lobe's 1 - u1 >= 2^-32); two draws for 53 bits
+  // cost 3% of a render (measured).
+  double Uniform() { return static_cast<double>(NextU32()) * 0x1.0p-32; }
 
   static std::uint64_t SplitMix64(std::uint64_t x) {
     x += 0x9e3779b97f4a7c15ULL;

@@ -59,7 +59,7 @@ RaySet FromFirstHits(const Scene& scene, int count, std::uint64_t stream, Spawn 
   for (std::size_t i = 0; i < camera.Size() && static_cast<int>(set.Size()) < count; ++i) {
     Hit hit;
     if (!scene.Intersect(camera.origins[i], camera.directions[i], hit, true) || hit.light) continue;
-    const vec3 n = glm::dot(camera.directions[i], hit.normal) < 0.0 ? hit.normal : -hit.normal;
+    const vec3 n = FacingNormal(camera.directions[i], hit.normal);
     spawn(hit.point, n, rng, set);
   }
   return set;

@@ -10,8 +10,7 @@ namespace {
 
 // Whether p, a point in the plane of wall `side`, lies inside that face by `margin`.
 bool InsideFace(const Wall& room, int side, vec3 p, double margin) {
-  const vec3 normal = glm::abs(room.Face(side).Normal());
-  const int axis = normal.x > 0.5 ? 0 : (normal.y > 0.5 ? 1 : 2);
+  const int axis = Wall::AxisOf(side);
   const vec3 lo = room.Position() + vec3(margin);
   const vec3 hi = room.Position() + vec3(room.Size() - margin);
   for (int a = 0; a < 3; ++a) {

@@ -17,7 +17,7 @@ Colour WhittedIntegrator::LocalLight(const Hit& hit, vec3 d, RenderStats& stats,
                                      PixelShaft shaft) const {
   const Material& m = *hit.material;
   // Light arrives on the side the ray came from.
-  const vec3 n = glm::dot(d, hit.normal) < 0.0 ? hit.normal : -hit.normal;
+  const vec3 n = FacingNormal(d, hit.normal);
   Colour sum(0.0);
   for (std::size_t i = 0; i < scene_.pointLights.size(); ++i) {
     const PointLight& light = scene_.pointLights[i];

@@ -45,6 +45,12 @@ inline vec3 OffsetRayOrigin(vec3 p, vec3 n, vec3 w) {
   return glm::dot(w, n) >= 0.0 ? p + d * n : p - d * n;
 }
 
+// The normal on the side that a ray with direction d arrives from: `normal` or its
+// opposite. Light is gathered, and rays leave, on that side.
+inline vec3 FacingNormal(vec3 d, vec3 normal) {
+  return glm::dot(d, normal) < 0.0 ? normal : -normal;
+}
+
 // Mirror reflection of the incident direction d about the unit normal n.
 inline vec3 Reflect(vec3 d, vec3 n) {
   return d - 2.0 * glm::dot(d, n) * n;

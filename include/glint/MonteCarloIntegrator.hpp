@@ -88,10 +88,6 @@ class MonteCarloIntegrator final : public Integrator {
   // is the wall's direct light, it spawns no child. Sets the node's colour and final flag.
   Colour EndAtTerminalWall(Ray& ray, const Hit& hit, vec3 n, Pcg32& rng, RenderStats& stats,
                            bool unoccluded) const;
-  // The normal on the side a ray with direction d arrives from.
-  static vec3 FacingNormal(vec3 d, vec3 normal) {
-    return glm::dot(d, normal) < 0.0 ? normal : -normal;
-  }
 
   // `shaft`: what is known in advance of this ray (the camera ray's pixel), or nothing.
   Colour TraceNode(RayTree& tree, std::uint32_t index, std::uint32_t root, Pcg32& rng,

@@ -39,6 +39,11 @@ class Wall {
   const Material& GetMaterial(int side) const { return materials_[side]; }
   // True if p lies inside the room (closed box).
   bool Contains(vec3 p, double tolerance = 0.0) const;
+  // The axis (0 = x, 1 = y, 2 = z) that wall `side` is perpendicular to.
+  static int AxisOf(int side) {
+    static constexpr std::array<int, kSides> kAxisOfSide = {0, 1, 0, 1, 2};
+    return kAxisOfSide[static_cast<std::size_t>(side)];
+  }
 
  private:
   // The wall side on each face of the box (IntersectSlabs' order); the front is open.
@@ -83,8 +88,7 @@ inline bool Wall::Exit(vec3 o, vec3 d, double& t, int& side) const {
 
 inline double Wall::DistanceThrough(vec3 o, vec3 d, int side) const {
   // As Exit computes it: gap / |d| along the side's axis.
-  static constexpr std::array<int, kSides> kAxisOfSide = {0, 1, 0, 1, 2};
-  const int a = kAxisOfSide[static_cast<std::size_t>(side)];
+  const int a = AxisOf(side);
   const double gap = d[a] > 0.0 ? maxCorner_[a] - o[a] : o[a] - position_[a];
   return gap / std::abs(d[a]);
 }

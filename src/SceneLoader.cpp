@@ -32,7 +32,21 @@ std::string LineColumn(const std::string& text, std::size_t offset) {
 
 Material ReadObjectMaterial(const JsonReader& o) {
   Material m;
-  const std::string kind = o.String("material", {"phong", "mirror", "glass"});
+  const std::string kind = o.String("material", {"phong", "mirror", "glass", "lambertian"});
+  if (kind == "lambertian") {
+    // The walls' BRDF rho / pi, lit directly in Whitted mode as a wall is: it has no
+    // exponent and no Whitted weights of its own.
+    for (const char* key : {"exponent", "ior", "whitted_diffuse", "whitted_specular"}) {
+      if (o.Has(key)) {
+        o.Fail(key, "no such field with material \"lambertian\" (it reflects rho/pi, as a wall)",
+               DescribeJson(o.Json()[key]));
+      }
+    }
+    m.type = MaterialType::Lambertian;
+    m.reflectance = o.Vec3("reflectance", Range::Closed(0.0, 1.0));
+    m.whittedDiffuse = 1.0;  // rho / pi * E, as a wall
+    return m;
+  }
   if (kind == "glass") {
     m.type = MaterialType::Glass;
     m.ior = o.Number("ior", Range::AtLeast(1.0));

@@ -69,6 +69,18 @@ TEST(SceneLoader, OverridesByJsonPointer) {
   EXPECT_EQ(s.spheres[0].GetMaterial().type, MaterialType::Mirror);  // a bare word is a string
 }
 
+TEST(SceneLoader, LambertianObjectsAreLitAsWalls) {
+  const Scene s = LoadScene(testing::SourcePath("scenes/cornell-lambert.json"));
+  for (const Material& m : {s.spheres[0].GetMaterial(), s.cubes[0].GetMaterial()}) {
+    EXPECT_EQ(m.type, MaterialType::Lambertian);
+    EXPECT_EQ(m.whittedDiffuse, 1.0);  // rho / pi * E, as a wall
+    EXPECT_EQ(m.whittedSpecular, 0.0);
+    EXPECT_EQ(m.WhittedChildWeight(), 0.0);
+  }
+  EXPECT_EQ(s.spheres[0].GetMaterial().reflectance, Colour(0.9));
+  EXPECT_EQ(s.spheres[1].GetMaterial().type, MaterialType::Glass);
+}
+
 void ExpectError(const std::vector<std::string>& overrides, const std::string& fragment) {
   try {
     CanonicalScene(overrides);
@@ -114,7 +126,13 @@ TEST(SceneLoader, ErrorsNameTheFileTheFieldTheExpectationAndTheValue) {
               "/objects/0/center: expected an array of 3 numbers in [-1000000, 1000000]");
   ExpectError({"/camera/resolution=[64, 64, 64]"}, "/camera/resolution: expected [width, height]");
   ExpectError({"/objects/1/material=wood"},
-              "/objects/1/material: expected one of \"phong\", \"mirror\" or \"glass\"");
+              "/objects/1/material: expected one of \"phong\", \"mirror\", \"glass\" or "
+              "\"lambertian\"");
+  // A lambertian object reflects rho/pi like a wall: a Phong field on it means nothing.
+  ExpectError({"/objects/0/material=lambertian"},
+              "/objects/0/exponent: expected no such field with material \"lambertian\"");
+  ExpectError({"/objects/1/material=lambertian", "/objects/1/reflectance=[0.5, 0.5, 0.5]"},
+              "/objects/1/ior: expected no such field with material \"lambertian\"");
   ExpectError({"/description=7"}, "/description: expected a non-empty string, found the number 7");
 }
 

@@ -23,6 +23,25 @@ RayTree TraceOne(const Integrator& integrator, vec3 start, vec3 d, Colour* colou
   return tree;
 }
 
+TEST(Whitted, LambertianObjectIsLitDirectlyAsAWall) {
+  // The top of O1, lambertian: L = rho / pi * sum over P1, P2 of I cos(theta) / r^2, and
+  // no child.
+  const Scene scene = LoadScene(testing::SourcePath("scenes/cornell-lambert.json"));
+  const WhittedIntegrator integrator(scene, 10);
+  const vec3 top(0.22, 0.36, 0.40);
+  Colour c;
+  const RayTree tree = TraceOne(integrator, top + vec3(0.0, 0.1, 0.0), vec3(0, -1, 0), &c);
+  double expected = 0.0;
+  for (const vec3 light : {vec3(0.50, 0.98, 0.50), vec3(0.02, 0.60, 0.75)}) {
+    const vec3 l = light - top;
+    expected += 0.9 * kInvPi * l.y / std::pow(glm::dot(l, l), 1.5);
+  }
+  EXPECT_EQ(tree.Size(), 1u);
+  EXPECT_TRUE(tree[0].final);
+  EXPECT_NEAR(tree[0].end.y, 0.36, 1e-12);
+  EXPECT_NEAR(c.x, expected, 1e-9 * expected);
+}
+
 TEST(Whitted, UnshadowedWallPointMatchesTheClosedForm) {
   // One point light, no objects: L = rho / pi * I cos(theta) / r^2.
   const Scene scene = CanonicalScene(
@@ -122,6 +141,24 @@ TEST(Whitted, NodeWeightsSumToOneAndImportanceIsTheirProduct) {
       }
     }
   }
+}
+
+TEST(Whitted, SmallAngleFresnelWeighsGlassByTheNormalIncidenceReflectance) {
+  // The design's small-angle study (lecture 2) in Whitted mode: R0 at an oblique hit,
+  // where the Fresnel equations give more.
+  const Scene scene = CanonicalScene();
+  const Material& glass = scene.spheres[1].GetMaterial();
+  const double w = glass.WhittedChildWeight();
+  const vec3 eye(0.5, 0.5, 2.5);
+  const vec3 d = vec3(0.895, 0.16, 0.72) - eye;  // near O2's rim: far from normal incidence
+  const RayTree exact = TraceOne(WhittedIntegrator(scene, 10), eye, d);
+  const RayTree small = TraceOne(WhittedIntegrator(scene, 10, FresnelModel::SmallAngle), eye, d);
+  ASSERT_EQ(scene.ObjectName(small[0].object), "O2");
+  ASSERT_EQ(small[0].childCount, 2u);
+  const double r0 = FresnelNormalIncidence(1.5);
+  EXPECT_NEAR(small[1].weight.x, w * r0, 1e-15);
+  EXPECT_NEAR(small[2].weight.x, w * (1.0 - r0), 1e-15);
+  EXPECT_GT(exact[1].weight.x, 1.5 * small[1].weight.x);
 }
 
 TEST(Whitted, ColourIsLocalLightPlusWeightedChildren) {

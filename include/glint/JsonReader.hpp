@@ -40,6 +40,7 @@ class JsonReader {
   JsonReader(const nlohmann::json& value, std::string file, std::string path);
 
   bool Has(const char* key) const { return value_.contains(key); }
+  const nlohmann::json& Json() const { return value_; }
   JsonReader Object(const char* key) const;
   // An array of objects with between minSize and maxSize elements.
   std::vector<JsonReader> Objects(const char* key, std::size_t minSize, std::size_t maxSize) const;

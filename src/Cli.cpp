@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "BenchCommand.hpp"
+#include "CompareCommand.hpp"
 #include "Converge.hpp"
 #include "Interrupt.hpp"
 #include "RenderJob.hpp"
@@ -31,8 +32,9 @@ namespace {
 
 constexpr const char* kExitCodes =
     "Exit codes: 0 success; 1 bad input (scene file, --set or option value); 2 an output "
-    "file could not be written; 130 and 143 stopped by SIGINT or SIGTERM (what was "
-    "rendered is saved to FILE.partial.EXT).";
+    "file could not be written; 3 (glint compare) the renders disagree with the reference; "
+    "130 and 143 stopped by SIGINT or SIGTERM (what was rendered is saved to "
+    "FILE.partial.EXT).";
 
 int Render(const RenderArgs& args) {
   const RenderSetup s = Prepare(args);
@@ -141,8 +143,9 @@ void AddRenderOptions(CLI::App* render, RenderArgs& args, bool outputs) {
       ->capture_default_str();
   render
       ->add_option("--fresnel", args.fresnel,
-                   "Monte Carlo: 'exact' Fresnel equations, or 'small-angle': the "
-                   "normal-incidence reflectance ((n-1)/(n+1))^2 at every angle")
+                   "Both modes: glass reflects by the 'exact' Fresnel equations, or by "
+                   "the 'small-angle' approximation: the normal-incidence reflectance "
+                   "((n-1)/(n+1))^2 at every angle (total internal reflection kept)")
       ->check(CLI::IsMember({"exact", "small-angle"}))
       ->capture_default_str();
   render
@@ -152,6 +155,14 @@ void AddRenderOptions(CLI::App* render, RenderArgs& args, bool outputs) {
       ->check(CLI::IsMember({"mis", "light", "brdf"}))
       ->capture_default_str();
   render->add_flag("-q,--quiet", args.quiet, "No progress bar and no summary line");
+}
+
+// Notes which Monte Carlo switches the command line gave, for Prepare to refuse them
+// in Whitted mode (a switch that means nothing is refused, not ignored).
+void RecordMonteCarloSwitches(const CLI::App* command, RenderArgs& args) {
+  for (const char* name : kMonteCarloSwitches) {
+    if (command->count(name) > 0) args.monteCarloSwitches.emplace_back(name);
+  }
 }
 
 }  // namespace
@@ -223,6 +234,41 @@ int RunCli(int argc, char** argv) {
       ->capture_default_str();
   benchCommand->add_option("--json", bench.json, "Also write the table as JSON to this file");
 
+  CompareArgs compare;
+  CLI::App* compareCommand = app.add_subcommand(
+      "compare",
+      "Bias test: do two independent renders A and B (PFM or EXR) agree with a reference "
+      "within their noise? Per block and channel, z from the spread of A - B (and of REF - "
+      "REF2 when a second reference is given), and the whole image's mean; one line, exit "
+      "code 3 on disagreement");
+  compareCommand->footer(kExitCodes);
+  compareCommand->add_option("A", compare.a, "First render (PFM or EXR)")->required();
+  compareCommand->add_option("B", compare.b, "Second render, independent of A (another seed)")
+      ->required();
+  compareCommand->add_option("REF", compare.reference, "Reference image (PFM or EXR)")->required();
+  compareCommand->add_option(
+      "REF2", compare.reference2,
+      "A second reference, independent of REF: its noise then counts (without it, REF is "
+      "taken as exact)");
+  compareCommand->add_option("--block", compare.block, "Block size in pixels")
+      ->check(CLI::Range(1, 4096))
+      ->capture_default_str();
+  compareCommand
+      ->add_option("--mean-sigma", compare.meanSigma,
+                   "The whole image's mean may differ by this many standard errors")
+      ->check(CLI::Range(0.1, 100.0))
+      ->capture_default_str();
+  compareCommand
+      ->add_option("--alpha", compare.familyAlpha,
+                   "Chance that an unbiased pair fails any block (Sidak-corrected)")
+      ->check(CLI::Range(1e-12, 0.5))
+      ->capture_default_str();
+  compareCommand
+      ->add_option("--scale", compare.scale,
+                   "Multiply A and B by this first: a calibration, e.g. 1.005 must disagree")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+
   conv->add_option("--csv", converge.csv, "CSV of the measurements")->capture_default_str();
   conv->add_option(
           "--chart", converge.chart,
@@ -251,11 +297,15 @@ int RunCli(int argc, char** argv) {
     return kExitBadInput;
   }
 
+  RecordMonteCarloSwitches(render, args);
+  RecordMonteCarloSwitches(conv, converge.render);
+  RecordMonteCarloSwitches(treeCommand, tree.render);
   try {
     if (*render) return Render(args);
     if (*conv) return RunConverge(converge);
     if (*treeCommand) return RunTree(tree);
     if (*benchCommand) return RunBench(bench);
+    if (*compareCommand) return RunCompare(compare);
   } catch (const InputError& e) {
     std::fprintf(stderr, "glint: %s\n", e.what());
     return kExitBadInput;

@@ -8,6 +8,7 @@ enum ExitCode : int {
   kExitOk = 0,
   kExitBadInput = 1,      // a bad scene file, override or command-line value
   kExitOutputFailed = 2,  // an output file could not be written
+  kExitDisagree = 3,      // glint compare: the renders disagree with the reference
 };
 
 int RunCli(int argc, char** argv);

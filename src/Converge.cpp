@@ -54,6 +54,7 @@ std::vector<Variant> ParseVariants(const ConvergeArgs& a) {
   std::string value;
   while (std::getline(in, value, ',')) {
     Variant v{key + "=" + value, a.render};
+    if (key != "fresnel") v.args.monteCarloSwitches.push_back("--compare " + key);
     const auto allow = [&](std::initializer_list<const char*> ok) {
       for (const char* o : ok) {
         if (value == o) return;
@@ -112,7 +113,7 @@ std::string Csv(const std::vector<Row>& rows) {
 }  // namespace
 
 int RunConverge(const ConvergeArgs& a) {
-  const Image reference = ReadPfm(a.reference);
+  const Image reference = ReadImage(a.reference);
   const bool byTime = !a.timeLadder.empty();
   if (byTime == !a.ladder.empty()) {
     throw InputError("give exactly one of --ladder (rays per pixel) and --time-ladder (seconds)");

@@ -72,10 +72,11 @@ std::string EncodePng(const Image& image, double exposure) {
 ImageFormat FormatFromPath(const std::string& path) {
   const std::string ext = Extension(path);
   if (ext == ".pfm") return ImageFormat::Pfm;
+  if (ext == ".exr") return ImageFormat::Exr;
   if (ext == ".png") return ImageFormat::Png;
   if (ext == ".ppm") return ImageFormat::Ppm;
   throw InputError(path + ": unknown output format '" + ext +
-                   "': expected a file name ending in .png, .ppm or .pfm");
+                   "': expected a file name ending in .png, .ppm, .pfm or .exr");
 }
 
 void WriteFileAtomically(const std::string& path, const std::string& bytes) {
@@ -116,6 +117,9 @@ void WriteImage(const Image& image, const std::string& path, double exposure) {
     case ImageFormat::Pfm:
       WriteFileAtomically(path, EncodePfm(image));
       break;
+    case ImageFormat::Exr:
+      WriteFileAtomically(path, EncodeExr(image));
+      break;
     case ImageFormat::Png:
       WriteFileAtomically(path, EncodePng(image, exposure));
       break;
@@ -151,6 +155,13 @@ Image ReadPfm(const std::string& path) {
   }
   if (!in) throw std::runtime_error(path + ": truncated PFM file");
   return image;
+}
+
+Image ReadImage(const std::string& path) {
+  const std::string ext = Extension(path);
+  if (ext == ".pfm") return ReadPfm(path);
+  if (ext == ".exr") return ReadExr(path);
+  throw InputError(path + ": expected an image of linear radiance, a .pfm or .exr file");
 }
 
 }  // namespace glint

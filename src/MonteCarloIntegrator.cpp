@@ -102,22 +102,18 @@ int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, Pcg32&
       return k;
     }
     case MaterialType::Mirror: {
-      // The spec's mirror is the n -> infinity limit of the normalised Phong BRDF. Its
-      // importance rho (n + 2) / (n + 1) cos(theta) tends to rho cos(theta) as the lobe
-      // closes on R, so the limit reflects rho cos(theta), not rho (a textbook mirror).
+      // A perfect mirror reflects rho at every angle (spec, "Objects"), as Whitted's
+      // mirror and Cycles' sharp Glossy BSDF do. (The normalised Phong lobe's n -> infinity
+      // limit is not this mirror: its albedo tends to rho cos(theta).)
       const vec3 r = glm::normalize(Reflect(d, n));
-      out[0] = {r, m.reflectance * std::max(0.0, glm::dot(n, r)), 0.0, RayKind::Reflected,
-                ray.inside};
+      out[0] = {r, m.reflectance, 0.0, RayKind::Reflected, ray.inside};
       return 1;
     }
     case MaterialType::Glass: {
       const vec3 mirror = glm::normalize(Reflect(d, hit.normal));
       const DielectricInterface glass = CrossDielectric(d, hit.normal, m.ior);
       const std::optional<vec3>& refracted = glass.refracted;
-      // Small-angle Fresnel: R0 at every angle, total reflection (TIR, grazing) kept.
-      const bool exact = options_.fresnel == MonteCarloOptions::Fresnel::Exact;
-      const double f =
-          exact || glass.reflectance == 1.0 ? glass.reflectance : FresnelNormalIncidence(m.ior);
+      const double f = GlassReflectance(glass, m.ior, options_.fresnel);
       if (options_.glass == MonteCarloOptions::Glass::Choose) {
         // One child, reflection with probability F: weight F / F = (1 - F) / (1 - F) = 1.
         if (!refracted || rng.Uniform() < f) {

@@ -100,6 +100,10 @@ std::string PartialPath(const std::string& path) {
 }
 
 RenderSetup Prepare(const RenderArgs& args, bool checkOutputs) {
+  if (args.mode != "mc" && !args.monteCarloSwitches.empty()) {
+    throw InputError(args.monteCarloSwitches.front() + ": means nothing with --mode " + args.mode +
+                     " (a Monte Carlo switch; use --mode mc)");
+  }
   RenderSetup s;
   s.scene = LoadScene(args.scene, args.overrides);
   for (const std::string& w : s.scene.warnings)
@@ -147,7 +151,9 @@ MonteCarloOptions McOptions(const RenderArgs& args, const ModeSettings& mode) {
 std::unique_ptr<Integrator> MakeIntegrator(const RenderArgs& args, const RenderSetup& s) {
   if (args.mode == "mc")
     return std::make_unique<MonteCarloIntegrator>(s.scene, McOptions(args, s.mode));
-  return std::make_unique<WhittedIntegrator>(s.scene, s.mode.maxDepth);
+  const FresnelModel fresnel =
+      args.fresnel == "small-angle" ? FresnelModel::SmallAngle : FresnelModel::Exact;
+  return std::make_unique<WhittedIntegrator>(s.scene, s.mode.maxDepth, fresnel);
 }
 
 void PrepareShaftsIfTheyPay(Camera& camera, const Integrator& integrator, const RenderSetup& s,
@@ -222,6 +228,7 @@ std::string StatsJson(const RenderArgs& args, const RenderSetup& s, const Camera
   j["shadow_rays_answered_by_shaft"] = st.shadowRaysByShaft;
   j["interrupted"] = r.interrupted;
   j["peak_rss_mib"] = PeakResidentMiB();
+  j["fresnel"] = args.fresnel;
   if (args.mode == "mc") {
     j["mc"] = {{"walls", args.walls},
                {"glass", args.glass},

@@ -31,7 +31,14 @@ struct RenderArgs {
   std::string fresnel = "exact";
   std::string strategy = "mis";
   int branches = 1;
+  // The Monte Carlo switches given on the command line (--walls, ...): with --mode
+  // whitted they mean nothing, and Prepare refuses them.
+  std::vector<std::string> monteCarloSwitches;
 };
+
+// The switches that mean something in Monte Carlo mode only.
+inline constexpr const char* kMonteCarloSwitches[] = {"--walls", "--branches", "--glass",
+                                                      "--strategy"};
 
 // Everything a render needs, checked before any time is spent rendering.
 struct RenderSetup {

@@ -5,8 +5,8 @@
 
 namespace glint {
 
-WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth)
-    : scene_(scene), maxDepth_(maxDepth) {}
+WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth, FresnelModel fresnel)
+    : scene_(scene), maxDepth_(maxDepth), fresnel_(fresnel) {}
 
 Colour WhittedIntegrator::Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,
                                 Pcg32& /*rng*/, RenderStats& stats) const {
@@ -66,7 +66,7 @@ std::uint32_t WhittedIntegrator::SpawnChildren(RayTree& tree, std::uint32_t inde
     // rays inside (CrossDielectric sees it from dot(d, n)).
     const DielectricInterface glass = CrossDielectric(d, hit.normal, m.ior);
     const std::optional<vec3>& refracted = glass.refracted;
-    const double f = glass.reflectance;  // 1 for total internal reflection
+    const double f = GlassReflectance(glass, m.ior, fresnel_);  // 1 for total internal reflection
     if (f > 0.0) children[count++] = {mirror, Colour(w * f), RayKind::Reflected, parent.inside};
     if (refracted && f < 1.0) {
       children[count++] = {*refracted, Colour(w * (1.0 - f)), RayKind::Refracted, !parent.inside};

@@ -49,6 +49,30 @@ TEST(ImageIO, PfmRoundTripAndBottomRowFirst) {
   }
 }
 
+TEST(ImageIO, ExrRoundTripIsFloatExactAndRowZeroIsTheTop) {
+  Image image(5, 3);
+  for (int y = 0; y < 3; ++y) {
+    for (int x = 0; x < 5; ++x) image.At(x, y) = Colour(0.1 * x + y, 1e-4 * (x + 1), 50.0 * y);
+  }
+  const std::string exr = (FreshDir("exr") / "a.exr").string();
+  const std::string pfm = (FreshDir("exr") / "a.pfm").string();
+  WriteImage(image, exr, 1.0);
+  WriteImage(image, pfm, 1.0);
+  ASSERT_EQ(ReadAll(exr).rfind("\x76\x2f\x31\x01", 0), 0u);  // OpenEXR's magic number
+  const Image back = ReadImage(exr);
+  const Image fromPfm = ReadImage(pfm);
+  ASSERT_EQ(back.Width(), 5);
+  ASSERT_EQ(back.Height(), 3);
+  for (int y = 0; y < 3; ++y) {
+    for (int x = 0; x < 5; ++x) {
+      EXPECT_EQ(back.At(x, y), fromPfm.At(x, y)) << x << "," << y;
+    }
+  }
+  EXPECT_EQ(back.At(4, 2).z, 100.0);  // the bottom row stays the bottom row
+  EXPECT_THROW(ReadImage((FreshDir("exr") / "missing.exr").string()), std::runtime_error);
+  EXPECT_THROW(ReadImage(pfm + ".txt"), InputError);
+}
+
 TEST(ImageIO, MappingFunction) {
   Image image(4, 1);
   image.At(0, 0) = Colour(0.0);

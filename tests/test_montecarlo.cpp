@@ -73,6 +73,21 @@ TEST(MonteCarlo, UnoccludedWallRadianceMatchesLambertsFormula) {
   }
 }
 
+TEST(MonteCarlo, LambertianObjectMatchesLambertsFormulaAndSpawnsNothingWithTerminalWalls) {
+  // The top of O1, lambertian: rho / pi * Le * the cosine-weighted solid angle of the light.
+  const Scene scene = LoadScene(testing::SourcePath("scenes/cornell-lambert.json"));
+  const MonteCarloIntegrator integrator(scene, {});
+  const Rectangle& light = scene.light->Shape();
+  const std::vector<vec3> corners = {light.PointFromUV(0, 0), light.PointFromUV(1, 0),
+                                     light.PointFromUV(1, 1), light.PointFromUV(0, 1)};
+  const vec3 top(0.22, 0.36, 0.40);
+  const double expected = 0.9 * kInvPi * 50.0 * PolygonCosineIntegral(top, vec3(0, 1, 0), corners);
+  const MeanAndError m =
+      EstimateRadiance(integrator, top + vec3(0, 0.1, 0), vec3(0, -1, 0), 200000, 0, 5);
+  ASSERT_LT(3.0 * m.StandardError(), 0.01 * expected);
+  EXPECT_NEAR(m.mean, expected, 3.0 * m.StandardError());
+}
+
 double PhongAlbedoByQuadrature(const Material& m, vec3 d, vec3 n) {
   // In the frame of the mirror direction R, alpha = (pi/2) s^2 crowds the nodes near the
   // lobe's axis; dw = sin(alpha) dalpha dphi.
@@ -121,6 +136,44 @@ TEST(MonteCarlo, PhongAlbedoAgreesWithQuadratureAndNeverExceedsRho) {
       if (exponent >= 10.0) {  // the comparison can see a 1% bias
         ASSERT_LT(4.0 * mc.StandardError(), 0.01 * quadrature) << what;
       }
+    }
+  }
+}
+
+// The normalised Phong lobe's n -> infinity limit is not the mirror: its albedo tends to
+// rho cos(theta) (spec, "Objects"), while a mirror reflects rho at every angle. Wherever
+// the whole lobe lies above the horizon the albedo is rho cos(theta) exactly, since
+// (n + 2) / (2 pi) * integral of cos^n(alpha) psi dw = R and R.n = cos(theta); at grazing
+// incidence the horizon cuts the lobe, and the gap closes as the lobe narrows.
+TEST(MonteCarlo, PhongAlbedoApproachesRhoCosThetaAsTheExponentGrows) {
+  const vec3 n(0, 0, 1);
+  for (double incidence : {0.0, 30.0, 60.0, 80.0}) {
+    const double th = incidence * kPi / 180.0;
+    const vec3 d(std::sin(th), 0.0, -std::cos(th));
+    const double limit = 0.8 * std::cos(th);
+    double previous = INFINITY;
+    for (double exponent : {1e2, 1e3, 1e4, 1e5}) {
+      Material m;
+      m.type = MaterialType::Phong;
+      m.reflectance = Colour(0.8);
+      m.exponent = exponent;
+      const double gap = std::abs(PhongAlbedoByQuadrature(m, d, n) - limit);
+      std::printf("Phong albedo, %2.0f deg, n = %6.0f: |albedo - rho cos| = %.3g\n", incidence,
+                  exponent, gap);
+      if (gap > 1e-9) {
+        EXPECT_LT(gap, previous) << incidence << " deg, n = " << exponent;
+      }
+      if (exponent >= 1e3) {
+        EXPECT_LT(gap, 1e-8) << incidence << " deg, n = " << exponent;
+      }
+      if (incidence == 80.0 && exponent == 1e2) {
+        EXPECT_GT(gap, 1e-4);  // the horizon cuts the lobe at grazing incidence
+      }
+      previous = gap;
+    }
+    // Far from rho away from normal incidence: this is not the mirror.
+    if (incidence > 0.0) {
+      EXPECT_GT(std::abs(0.8 - limit), 0.1) << incidence << " deg";
     }
   }
 }

@@ -2,6 +2,7 @@
 // the outside (the medium of index 1); `ior` is the refractive index inside.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 
 #include "glint/Math.hpp"
@@ -26,6 +27,17 @@ double FresnelDielectric(vec3 d, vec3 n, double ior);
 
 // Reflectance at normal incidence, ((n - 1) / (n + 1))^2.
 double FresnelNormalIncidence(double ior);
+
+// Which reflectance glass has: the Fresnel equations, or the design's small-angle
+// approximation (lecture 2), the normal-incidence reflectance at every angle.
+enum class FresnelModel : std::uint8_t { Exact, SmallAngle };
+
+// The reflectance of `glass` (index ior) under `model`. The small-angle approximation
+// keeps total internal reflection (F = 1), where no refracted ray exists.
+inline double GlassReflectance(const DielectricInterface& glass, double ior, FresnelModel model) {
+  if (model == FresnelModel::Exact || glass.reflectance == 1.0) return glass.reflectance;
+  return FresnelNormalIncidence(ior);
+}
 
 // Refracted direction (unit) for a ray along d, or nothing for total internal
 // reflection. Uses a safe square root; works from either side of the surface.

@@ -8,19 +8,28 @@
 
 namespace glint {
 
-enum class ImageFormat { Pfm, Png, Ppm };
+enum class ImageFormat { Pfm, Exr, Png, Ppm };
 
-// The format named by the file's extension (.pfm, .png, .ppm); throws InputError for
-// anything else.
+// The format named by the file's extension (.pfm, .exr, .png, .ppm); throws InputError
+// for anything else.
 ImageFormat FormatFromPath(const std::string& path);
 
-// Writes linear radiance as PFM, or the mapping function's output as PNG or PPM.
+// Writes linear radiance as PFM or OpenEXR, or the mapping function's output as PNG or PPM.
 // Throws std::runtime_error on an I/O failure.
 void WriteImage(const Image& image, const std::string& path, double exposure);
 
 // PFM: "PF", width height, a negative scale for little-endian, rows bottom to top.
 void WritePfm(const Image& image, const std::string& path);
 Image ReadPfm(const std::string& path);
+
+// OpenEXR: three 32-bit float channels R, G, B of linear radiance, ZIP-compressed
+// (src/ExrImage.cpp, through the OpenEXR library).
+std::string EncodeExr(const Image& image);
+Image ReadExr(const std::string& path);
+
+// Linear radiance from a PFM or OpenEXR file, by its extension; throws std::runtime_error
+// for a file that cannot be read and InputError for another extension.
+Image ReadImage(const std::string& path);
 
 // Writes `bytes` to `path` through a temporary file and a rename.
 void WriteFileAtomically(const std::string& path, const std::string& bytes);

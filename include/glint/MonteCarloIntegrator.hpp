@@ -3,6 +3,7 @@
 // Lambertian walls (terminal or diffuse), Russian roulette by throughput.
 #pragma once
 
+#include "glint/Fresnel.hpp"
 #include "glint/Hit.hpp"
 #include "glint/Integrator.hpp"
 #include "glint/Light.hpp"
@@ -14,7 +15,7 @@ namespace glint {
 struct MonteCarloOptions {
   enum class Walls { Terminal, Diffuse };
   enum class Glass { Split, Choose };
-  enum class Fresnel { Exact, SmallAngle };
+  using Fresnel = FresnelModel;
   enum class Strategy { Mis, Light, Brdf };
 
   Walls walls = Walls::Terminal;  // terminal: a wall hit spawns no child (the design)

@@ -3,6 +3,7 @@
 // Fresnel-weighted reflection and refraction, at most `maxDepth` ray iterations.
 #pragma once
 
+#include "glint/Fresnel.hpp"
 #include "glint/Hit.hpp"
 #include "glint/Integrator.hpp"
 #include "glint/Scene.hpp"
@@ -11,7 +12,9 @@ namespace glint {
 
 class WhittedIntegrator final : public Integrator {
  public:
-  WhittedIntegrator(const Scene& scene, int maxDepth);
+  // `fresnel`: the glass's reflectance, the Fresnel equations or the small-angle
+  // approximation (the normal-incidence reflectance at every angle).
+  WhittedIntegrator(const Scene& scene, int maxDepth, FresnelModel fresnel = FresnelModel::Exact);
 
   Colour Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft, Pcg32& rng,
                RenderStats& stats) const override;
@@ -37,6 +40,7 @@ class WhittedIntegrator final : public Integrator {
 
   const Scene& scene_;
   int maxDepth_;
+  FresnelModel fresnel_;
 };
 
 }  // namespace glint

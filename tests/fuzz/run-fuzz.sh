@@ -2,19 +2,20 @@
 # run-fuzz.sh SOURCE_DIR WORK_DIR SECONDS SOURCES: builds the scene-loader fuzzer with
 # clang (-fsanitize=fuzzer,address,undefined) from the library's SOURCES (paths relative
 # to SOURCE_DIR, separated by ';', as CMake lists glint_core's) and runs it for a bounded
-# time on a copy of the seed corpus. Exit 77 (skipped) where clang or libFuzzer is missing.
+# time on a copy of the seed corpus. Fails where clang is missing (tools/setup.sh --dev).
 set -euo pipefail
 src=$1
 work=$2
 seconds=$3
 IFS=';' read -ra sources <<< "$4"
 if ! command -v clang++ >/dev/null; then
-  echo "skipped: clang++ not found"
-  exit 77
+  echo "fuzz: clang++ is not installed (run: bash tools/setup.sh --dev)"
+  exit 1
 fi
 mkdir -p "$work/obj" "$work/corpus" "$work/artifacts"
 flags=(-std=c++20 -O1 -g -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined
-       -DGLM_FORCE_XYZW_ONLY -I"$src/include" -isystem /usr/include/stb -w)
+       -DGLM_FORCE_XYZW_ONLY -I"$src/include" -isystem /usr/include/stb -w
+       $(pkg-config --cflags OpenEXR))
 objects=()
 for s in "${sources[@]}"; do
   obj="$work/obj/$(basename "$s" .cpp).o"
@@ -27,7 +28,7 @@ for s in "${sources[@]}"; do
 done
 wait
 clang++ "${flags[@]}" -fsanitize=fuzzer "$src/tests/fuzz/scene_fuzzer.cpp" "${objects[@]}" \
-  -o "$work/scene_fuzzer"
+  $(pkg-config --libs OpenEXR) -o "$work/scene_fuzzer"
 cp "$src"/tests/fuzz/corpus/* "$src"/tests/fuzz/regressions/* "$work/corpus/" 2>/dev/null || true
 cd "$work"
 ./scene_fuzzer -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 \

@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Idempotent set-up: installs glint's Debian packages when any is missing.
 # Runs `apt-get update` only when something has to be installed.
+#   tools/setup.sh         what building and rendering need
+#   tools/setup.sh --dev   also what only the tests and tools need (Cycles cross-checks,
+#                          lint, fuzzing), so that `ctest` runs every check, none skipped
 set -euo pipefail
 
 packages=(
@@ -9,11 +12,29 @@ packages=(
   nlohmann-json3-dev  # scene files
   libcli11-dev        # command line
   libstb-dev          # stb_image_write for PNG
+  libopenexr-dev      # OpenEXR output and input
   libgtest-dev        # unit tests
   libbenchmark-dev    # micro-benchmarks
   python3-matplotlib python3-numpy  # report charts
   graphviz            # ray-tree drawings
 )
+dev_packages=(
+  blender             # tools/cycles-render: Cycles references (validate.cycles)
+  openexr             # exrheader and friends, to inspect EXR files
+  clang libclang-rt-dev  # the scene-loader fuzzer (libFuzzer)
+  clang-format clang-tidy cppcheck  # tools/lint
+)
+
+case "${1:-}" in
+  "") ;;
+  --dev) packages+=("${dev_packages[@]}") ;;
+  -h|--help)
+    sed -n '2,6p' "$0" | sed 's/^# \{0,1\}//'
+    exit 0 ;;
+  *)
+    echo "setup: unknown option '$1': expected nothing or --dev" >&2
+    exit 1 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

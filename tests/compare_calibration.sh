@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# compare_calibration.sh GLINT SCENE WORK_DIR: `glint compare` is calibrated at the
+# settings of validate.cycles (64x64): two independent pairs of glint renders agree; the
+# same scaled by 1.005 disagree with terminal walls, by 1.01 with diffuse walls.
+set -euo pipefail
+glint=$1
+scene=$2
+work=$3
+mkdir -p "$work"
+cd "$work"
+fail=0
+calibrate() {  # walls spp scale
+  local walls=$1 spp=$2 scale=$3
+  for seed in 11 12 13 14; do
+    "$glint" render "$scene" --mode mc --walls "$walls" --size 64 --spp "$spp" --seed "$seed" \
+      -q -o "$walls-$seed.pfm"
+  done
+  echo "$walls walls, unscaled:"
+  "$glint" compare "$walls-11.pfm" "$walls-12.pfm" "$walls-13.pfm" "$walls-14.pfm" || fail=1
+  echo "$walls walls, A and B scaled by $scale:"
+  if "$glint" compare "$walls-11.pfm" "$walls-12.pfm" "$walls-13.pfm" "$walls-14.pfm" \
+      --scale "$scale"; then
+    echo "compare_calibration: a bias of $scale went unseen"
+    fail=1
+  fi
+}
+calibrate terminal 1024 1.005
+calibrate diffuse 4096 1.01
+exit $fail

@@ -21,6 +21,9 @@ struct BenchArgs {
   std::string json;  // optional: the table as JSON
 };
 
-int RunBench(const BenchArgs& args);
+class Cluster;
+
+// Under MPI (`mpirun -np N glint bench`): the scaling over ranks, one thread each.
+int RunBench(const BenchArgs& args, const Cluster& cluster);
 
 }  // namespace glint

@@ -75,11 +75,10 @@ vec3 Camera::DirectionThrough(double px, double py) const {
   return glm::normalize(ViewPlanePoint(px, py) - eye_);
 }
 
-RenderStats Camera::Render(const Integrator& integrator, const RenderOptions& options) {
+RenderStats Camera::RenderChunks(const Integrator& integrator, const RenderOptions& options,
+                                 int first, int last) {
   const int count = width_ * height_;
-  constexpr int kChunk = 64;
-  const int chunks = (count + kChunk - 1) / kChunk;
-  std::atomic<std::size_t> done{0};
+  std::atomic<std::size_t> done{static_cast<std::size_t>(first) * kChunk};
   RenderStats total;
   const int threads = options.threads > 0 ? options.threads : MaxThreads();
   if (arenas_.size() < static_cast<std::size_t>(threads))
@@ -91,14 +90,22 @@ RenderStats Camera::Render(const Integrator& integrator, const RenderOptions& op
     // Chunks of consecutive pixels, handed out dynamically: the progress counter and
     // the cancel flag are touched once a chunk, not once a pixel.
 #pragma omp for schedule(dynamic, 1) nowait
-    for (int chunk = 0; chunk < chunks; ++chunk) {
+    for (int chunk = first; chunk < last; ++chunk) {
       if (options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed)) continue;
       const int end = std::min(count, (chunk + 1) * kChunk);
       for (int i = chunk * kChunk; i < end; ++i) {
+        Pixel& pixel = pixels_[static_cast<std::size_t>(i)];
+        if (options.skipDone && pixel.Passes() > options.pass) continue;  // resumed: done
         Pcg32 rng = Pcg32::ForPixel(options.seed, static_cast<std::uint64_t>(i), options.pass);
-        pixels_[static_cast<std::size_t>(i)].Render(*this, i % width_, i / width_,
-                                                    options.raysPerPixel, integrator, rng, trees,
-                                                    stats, false, options.cancel);
+        const PixelPass pass =
+            pixel.TracePass(*this, i % width_, i / width_, options.raysPerPixel, integrator, rng,
+                            trees, stats, false, options.cancel);
+        if (pass.complete) {
+          pixel.Add(pass);
+        } else if (pass.samples > 0) {
+#pragma omp critical(glint_cut_short)
+          cutShort_.emplace_back(static_cast<std::size_t>(i), pass);
+        }
       }
       const std::size_t finished =
           done.fetch_add(static_cast<std::size_t>(end - chunk * kChunk), std::memory_order_relaxed);
@@ -109,8 +116,11 @@ RenderStats Camera::Render(const Integrator& integrator, const RenderOptions& op
 #pragma omp critical(glint_render_stats)
     total += stats;
   }
-  if (options.progress)
-    options.progress(static_cast<std::size_t>(count), static_cast<std::size_t>(count));
+  if (options.progress) {
+    options.progress(std::min(static_cast<std::size_t>(count),
+                              static_cast<std::size_t>(last) * static_cast<std::size_t>(kChunk)),
+                     static_cast<std::size_t>(count));
+  }
   return total;
 }
 
@@ -140,12 +150,19 @@ void Camera::PrepareShafts(const Scene& scene, PixelShaft::Lights lights, int th
 
 void Camera::Clear() {
   for (Pixel& p : pixels_) p.Clear();
+  cutShort_.clear();
 }
 
 Image Camera::ToImage() const {
   Image image(width_, height_);
   for (int y = 0; y < height_; ++y) {
     for (int x = 0; x < width_; ++x) image.At(x, y) = PixelAt(x, y).Radiance();
+  }
+  for (const auto& [i, pass] : cutShort_) {
+    Pixel p = pixels_[i];
+    p.Add(pass);
+    image.At(static_cast<int>(i % static_cast<std::size_t>(width_)),
+             static_cast<int>(i / static_cast<std::size_t>(width_))) = p.Radiance();
   }
   return image;
 }

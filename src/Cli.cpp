@@ -36,11 +36,30 @@ constexpr const char* kExitCodes =
     "130 and 143 stopped by SIGINT or SIGTERM (what was rendered is saved to "
     "FILE.partial.EXT).";
 
-int Render(const RenderArgs& args) {
-  const RenderSetup s = Prepare(args);
+int Render(const RenderArgs& args, const Cluster& cluster) {
+  // Every rank checks the input (rank 0 the outputs too); all stop if any rank fails,
+  // with one message: rank 0's, or else the first failing rank's.
+  RenderSetup s;
+  std::string error;
+  try {
+    s = Prepare(args, /*checkOutputs=*/cluster.Root());
+  } catch (const InputError& e) {
+    error = e.what();
+  }
+  std::vector<int> failed;
+  if (!cluster.AllOk(error.empty(), &failed)) {
+    if (!error.empty() && cluster.Rank() == failed.front()) {
+      std::fprintf(stderr, "glint: %s%s\n",
+                   cluster.Root() ? "" : ("rank " + std::to_string(cluster.Rank()) + ": ").c_str(),
+                   error.c_str());
+    }
+    return kExitBadInput;
+  }
   Camera camera(s.scene.wall, s.scene.camera.eye, s.width, s.height);
   const std::unique_ptr<Integrator> integrator = MakeIntegrator(args, s);
   const RenderResult r = RunPasses(camera, *integrator, args, s);
+  if (!cluster.Root())
+    return r.interrupted ? 128 + (InterruptSignal() ? InterruptSignal() : SIGINT) : kExitOk;
 
   const auto target = [&](const std::string& path) {
     return r.interrupted ? PartialPath(path) : path;
@@ -55,7 +74,7 @@ int Render(const RenderArgs& args) {
     return kExitOutputFailed;
   }
   if (r.interrupted) {
-    const int signal = InterruptSignal();
+    const int signal = InterruptSignal() != 0 ? InterruptSignal() : SIGINT;
     std::fprintf(stderr, "glint: stopped by %s after %.2f s; saved what was rendered to %s\n",
                  signal == SIGTERM ? "SIGTERM" : "SIGINT", r.seconds,
                  PartialPath(s.outputs.front()).c_str());
@@ -116,6 +135,21 @@ void AddRenderOptions(CLI::App* render, RenderArgs& args, bool outputs) {
     render->add_option("-o,--output", args.outputs,
                        "Output file, repeatable; the extension picks the format: .png and .ppm "
                        "(display image), .pfm (linear radiance). Default: SCENE-NAME.png");
+  if (outputs) {
+    render->add_option("--checkpoint", args.checkpoint,
+                       "Save the render's state (every pixel's sums and samples) to this file "
+                       "every --checkpoint-every seconds and at an interrupt, atomically; "
+                       "--resume continues it");
+    render
+        ->add_option("--checkpoint-every", args.checkpointEvery,
+                     "Seconds between checkpoints (fractions allowed)")
+        ->check(CLI::Range(1e-3, 1e9))
+        ->capture_default_str();
+    render->add_option("--resume", args.resume,
+                       "Continue the render saved in this checkpoint; refused for a checkpoint "
+                       "of another scene, size, seed or set of flags. Resumed after SIGKILL, the "
+                       "image is the same, bit for bit, as a render that ran through");
+  }
   if (outputs)
     render->add_option("--stats", args.statsPath,
                        "Write timing and ray counts by kind (camera, reflected, refracted, "
@@ -167,7 +201,7 @@ void RecordMonteCarloSwitches(const CLI::App* command, RenderArgs& args) {
 
 }  // namespace
 
-int RunCli(int argc, char** argv) {
+int RunCli(int argc, char** argv, const Cluster& cluster) {
   CLI::App app{"glint: a small global-illumination renderer (Whitted and Monte Carlo)", "glint"};
   app.footer(kExitCodes);
   app.require_subcommand(1);
@@ -298,22 +332,27 @@ int RunCli(int argc, char** argv) {
   }
 
   RecordMonteCarloSwitches(render, args);
+  args.cluster = &cluster;
   RecordMonteCarloSwitches(conv, converge.render);
   RecordMonteCarloSwitches(treeCommand, tree.render);
+  // One voice: under MPI only rank 0 reports.
+  const auto report = [&](const char* prefix, const char* what) {
+    if (cluster.Root()) std::fprintf(stderr, "glint: %s%s\n", prefix, what);
+  };
   try {
-    if (*render) return Render(args);
+    if (*render) return Render(args, cluster);
     if (*conv) return RunConverge(converge);
     if (*treeCommand) return RunTree(tree);
-    if (*benchCommand) return RunBench(bench);
+    if (*benchCommand) return RunBench(bench, cluster);
     if (*compareCommand) return RunCompare(compare);
   } catch (const InputError& e) {
-    std::fprintf(stderr, "glint: %s\n", e.what());
+    report("", e.what());
     return kExitBadInput;
   } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "glint: %s\n", e.what());
+    report("", e.what());
     return kExitBadInput;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "glint: error: %s\n", e.what());
+    report("error: ", e.what());
     return kExitOutputFailed;
   }
   return kExitBadInput;

@@ -11,6 +11,9 @@ enum ExitCode : int {
   kExitDisagree = 3,      // glint compare: the renders disagree with the reference
 };
 
-int RunCli(int argc, char** argv);
+class Cluster;
+
+// `cluster`: the MPI ranks this process is one of (or this process alone).
+int RunCli(int argc, char** argv, const Cluster& cluster);
 
 }  // namespace glint

@@ -4,13 +4,18 @@
 
 namespace glint {
 
-void Pixel::Render(const Camera& camera, int x, int y, int rays, const Integrator& integrator,
-                   Pcg32& rng, RayTree& trees, RenderStats& stats, bool keepTrees,
-                   const std::atomic<bool>* cancel) {
+PixelPass Pixel::TracePass(const Camera& camera, int x, int y, int rays,
+                           const Integrator& integrator, Pcg32& rng, RayTree& trees,
+                           RenderStats& stats, bool keepTrees,
+                           const std::atomic<bool>* cancel) const {
   const double importance = 1.0 / rays;  // all rays of a pixel weigh the same
+  PixelPass pass;
   trees.Clear();
   for (int i = 0; i < rays; ++i) {
-    if (cancel != nullptr && (i & 255) == 255 && cancel->load(std::memory_order_relaxed)) break;
+    if (cancel != nullptr && (i & 255) == 255 && cancel->load(std::memory_order_relaxed)) {
+      pass.complete = false;
+      break;
+    }
     if (!keepTrees) trees.Clear();
     const double px = x + rng.Uniform();  // a random point inside the pixel
     const double py = y + rng.Uniform();
@@ -29,9 +34,10 @@ void Pixel::Render(const Camera& camera, int x, int y, int rays, const Integrato
     }
     // Radiance() = sum_i C_i / N over the finite samples: each first ray's colour times
     // its importance 1/N. Dropped samples (and rays a cancel cut short) do not darken it.
-    sum_ += c;
-    ++samples_;
+    pass.sum += c;
+    ++pass.samples;
   }
+  return pass;
 }
 
 }  // namespace glint

@@ -9,7 +9,10 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
+#include "Checkpoint.hpp"
 #include "Interrupt.hpp"
 #include "Progress.hpp"
 #include "glint/ImageIO.hpp"
@@ -112,7 +115,9 @@ RenderSetup Prepare(const RenderArgs& args, bool checkOutputs) {
   s.width = s.scene.camera.width;
   s.height = s.scene.camera.height;
   if (!args.size.empty()) ParseSize(args.size, s.width, s.height);
-  s.threads = args.threads > 0 ? args.threads : omp_get_max_threads();
+  s.threads = args.threads > 0          ? args.threads
+              : args.cluster != nullptr ? args.cluster->DefaultThreads()
+                                        : omp_get_max_threads();
   CheckMemory(s.width, s.height, s.threads);
   // With a time budget, --spp is the rays per pixel of each pass; without it, 0: passes
   // of 1, 2, 4, ... rays (PassSchedule).
@@ -128,6 +133,10 @@ RenderSetup Prepare(const RenderArgs& args, bool checkOutputs) {
     CheckWritable(path);
   }
   if (!args.statsPath.empty()) CheckWritable(args.statsPath);
+  if (!args.checkpoint.empty()) CheckWritable(args.checkpoint);
+  if (!args.resume.empty() && !std::filesystem::is_regular_file(args.resume)) {
+    throw InputError("--resume " + args.resume + ": no such checkpoint file");
+  }
   return s;
 }
 
@@ -163,21 +172,84 @@ void PrepareShaftsIfTheyPay(Camera& camera, const Integrator& integrator, const 
   }
 }
 
-// One pass, or passes until the time budget would be overspent.
+nlohmann::json RenderIdentity(const RenderArgs& args, const RenderSetup& s) {
+  std::ifstream in(args.scene, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  char fingerprint[17];
+  std::snprintf(fingerprint, sizeof fingerprint, "%016llx",
+                static_cast<unsigned long long>(Fingerprint(bytes)));
+  nlohmann::json j = {{"scene file contents", fingerprint},
+                      {"--set", args.overrides},
+                      {"--size", std::to_string(s.width) + "x" + std::to_string(s.height)},
+                      {"--seed", args.seed},
+                      {"--mode", args.mode},
+                      {"--spp", s.raysPerPass},
+                      {"--time", args.timeBudget},
+                      {"--fresnel", args.fresnel}};
+  if (args.mode == "mc") {
+    j["--walls"] = args.walls;
+    j["--glass"] = args.glass;
+    j["--strategy"] = args.strategy;
+    j["--branches"] = args.branches;
+  }
+  return j;
+}
+
+namespace {
+
+// A resumed render's progress on every rank: rank 0 reads the checkpoint, the others
+// learn how far it had come and which pixels have passed (their sums stay on rank 0).
+CheckpointProgress Resume(Camera& camera, const RenderArgs& args, const RenderSetup& s,
+                          const Cluster& cluster) {
+  CheckpointProgress progress;
+  std::string error;
+  if (cluster.Root()) {
+    try {
+      progress = LoadCheckpoint(args.resume, RenderIdentity(args, s), camera);
+    } catch (const InputError& e) {
+      error = e.what();
+    }
+  }
+  if (!cluster.AllOk(error.empty())) throw InputError(error);  // rank 0 reports it
+  progress.passes = cluster.Broadcast(progress.passes);
+  progress.spp = cluster.Broadcast(progress.spp);
+  progress.currentRays = cluster.Broadcast(progress.currentRays);
+  progress.seconds = cluster.Broadcast(progress.seconds);
+  if (cluster.Distributed()) {
+    const std::size_t count =
+        static_cast<std::size_t>(camera.Width()) * static_cast<std::size_t>(camera.Height());
+    std::vector<std::uint32_t> passes(count);
+    for (std::size_t i = 0; i < count; ++i) passes[i] = camera.PixelAt(i).Passes();
+    cluster.Broadcast(passes.data(), passes.size() * sizeof(std::uint32_t));
+    if (!cluster.Root()) {
+      for (std::size_t i = 0; i < count; ++i) camera.PixelAt(i).Restore(Colour(0.0), 0, passes[i]);
+    }
+  }
+  return progress;
+}
+
+}  // namespace
+
+// One pass, or passes until the time budget would be overspent; with a checkpoint, saved
+// as it goes; under MPI, spread over the ranks (Cluster), rank 0 deciding for all.
 RenderResult RunPasses(Camera& camera, const Integrator& integrator, const RenderArgs& args,
                        const RenderSetup& s) {
+  const Cluster single;
+  const Cluster& cluster = args.cluster ? *args.cluster : single;
   const std::atomic<bool>& interrupted = InstallInterruptHandlers();
-  ProgressBar bar(!args.quiet && StderrIsTerminal());
+  ProgressBar bar(!args.quiet && cluster.Root() && StderrIsTerminal());
   const auto start = std::chrono::steady_clock::now();
+  double spentBefore = 0.0;  // in the sessions before a resume
   const auto elapsed = [&]() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return spentBefore +
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   const bool progressive = args.timeBudget > 0.0;
   PrepareShaftsIfTheyPay(camera, integrator, s, progressive);  // on the clock
   RenderResult r;
   RenderOptions options;
   options.seed = args.seed;
-  options.threads = args.threads;
+  options.threads = s.threads;
   options.cancel = &interrupted;
   std::string label;
   options.progress = [&](std::size_t done, std::size_t total) {
@@ -186,20 +258,70 @@ RenderResult RunPasses(Camera& camera, const Integrator& integrator, const Rende
   };
   PassSchedule schedule(s.raysPerPass);
   int rays = progressive ? schedule.FirstRays() : s.raysPerPass;
-  do {
+  if (!args.resume.empty()) {
+    const CheckpointProgress progress = Resume(camera, args, s, cluster);
+    r.passes = progress.passes;
+    r.spp = progress.spp;
+    r.stats = progress.stats;
+    spentBefore = progress.seconds;
+    options.skipDone = progress.currentRays > 0;  // a pass under way: its done pixels stay
+    if (options.skipDone) {
+      rays = progress.currentRays;
+    } else if (!progressive) {
+      rays = 0;  // the checkpoint holds the finished render
+    }
+  }
+  const nlohmann::json identity = RenderIdentity(args, s);
+  double lastSave = elapsed();
+  const auto save = [&](int currentRays) {
+    CheckpointProgress progress;
+    progress.passes = r.passes;
+    progress.spp = r.spp;
+    progress.currentRays = currentRays;
+    progress.seconds = elapsed();
+    progress.stats = r.stats;
+    try {
+      SaveCheckpoint(args.checkpoint, identity, camera, progress);
+    } catch (const std::exception& e) {  // the render goes on; the next save tries again
+      std::fprintf(stderr, "glint: warning: checkpoint not saved: %s\n", e.what());
+    }
+    lastSave = elapsed();
+  };
+  RenderStats passStats;
+  const std::function<void()> betweenBatches = [&]() {
+    if (elapsed() - lastSave < args.checkpointEvery) return;
+    RenderStats sofar = r.stats;
+    std::swap(r.stats, sofar);
+    r.stats += passStats;  // the rays of the pass so far count too
+    save(rays);
+    std::swap(r.stats, sofar);
+  };
+  const bool checkpointing = !args.checkpoint.empty() && cluster.Root();
+  while (rays > 0) {
     options.raysPerPixel = rays;
     options.pass = r.passes;
     label = progressive ? "pass " + std::to_string(r.passes + 1) : "";
     const double before = elapsed();
-    r.stats += camera.Render(integrator, options);
+    passStats = RenderStats{};
+    cluster.RenderPass(camera, integrator, options, passStats,
+                       checkpointing ? betweenBatches : std::function<void()>());
+    r.stats += passStats;
     const double passSeconds = elapsed() - before;
-    if (interrupted.load()) break;
+    // One decision for all ranks: rank 0's, with an interrupt anywhere counted.
+    const bool stop = !cluster.AllOk(!interrupted.load());
+    if (stop) {
+      r.interrupted = true;
+      break;
+    }
     ++r.passes;
     r.spp += static_cast<std::uint64_t>(rays);
+    options.skipDone = false;
     rays = progressive ? schedule.Next(rays, passSeconds, args.timeBudget - elapsed()) : 0;
-  } while (rays > 0);
+    rays = cluster.Broadcast(rays);
+  }
+  if (checkpointing) save(r.interrupted ? options.raysPerPixel : 0);
   r.seconds = elapsed();
-  r.interrupted = interrupted.load();
+  r.interrupted = r.interrupted || interrupted.load();
   bar.Finish();
   return r;
 }
@@ -215,6 +337,7 @@ std::string StatsJson(const RenderArgs& args, const RenderSetup& s, const Camera
   j["spp"] = r.spp;
   j["passes"] = r.passes;
   j["threads"] = s.threads;
+  j["ranks"] = args.cluster ? args.cluster->Size() : 1;
   j["seed"] = args.seed;
   j["seconds"] = r.seconds;
   if (args.timeBudget > 0.0) j["time_budget"] = args.timeBudget;
@@ -242,14 +365,16 @@ std::string StatsJson(const RenderArgs& args, const RenderSetup& s, const Camera
 
 void PrintSummary(const RenderArgs& args, const RenderSetup& s, const RenderResult& r) {
   const RenderStats& st = r.stats;
+  const int size = args.cluster ? args.cluster->Size() : 1;
+  const std::string ranks = size > 1 ? std::to_string(size) + " ranks x " : "";
   const double total = static_cast<double>(st.TotalRays());
   const auto spp = static_cast<unsigned long long>(r.spp);
   std::fprintf(stderr,
-               "glint: %s %dx%d, %llu rays/pixel (%u pass%s), %d thread%s: %.3f s, %.3g rays "
+               "glint: %s %dx%d, %llu rays/pixel (%u pass%s), %s%d thread%s: %.3f s, %.3g rays "
                "(camera %.3g, reflected %.3g, refracted %.3g, diffuse %.3g, shadow %.3g), "
                "%.2f Mrays/s",
                args.mode.c_str(), s.width, s.height, spp, r.passes, r.passes == 1 ? "" : "es",
-               s.threads, s.threads == 1 ? "" : "s", r.seconds, total,
+               ranks.c_str(), s.threads, s.threads == 1 ? "" : "s", r.seconds, total,
                static_cast<double>(st.cameraRays), static_cast<double>(st.reflectedRays),
                static_cast<double>(st.refractedRays), static_cast<double>(st.diffuseRays),
                static_cast<double>(st.shadowRays),

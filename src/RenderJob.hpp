@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "Cluster.hpp"
 #include "glint/Camera.hpp"
 #include "glint/Integrator.hpp"
 #include "glint/MonteCarloIntegrator.hpp"
@@ -34,6 +35,13 @@ struct RenderArgs {
   // The Monte Carlo switches given on the command line (--walls, ...): with --mode
   // whitted they mean nothing, and Prepare refuses them.
   std::vector<std::string> monteCarloSwitches;
+  // Checkpoints: save to `checkpoint` every `checkpointEvery` seconds and at an
+  // interrupt; continue the render saved in `resume`.
+  std::string checkpoint;
+  double checkpointEvery = 60.0;
+  std::string resume;
+  // The processes of the render (MPI ranks), or this one alone when null.
+  const Cluster* cluster = nullptr;
 };
 
 // The switches that mean something in Monte Carlo mode only.

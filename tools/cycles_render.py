@@ -4,7 +4,8 @@
         --walls terminal|diffuse --size N|WxH --spp S --seed K -o OUT.pfm|OUT.exr
 
 What it builds (the trust issue, #15):
-- walls: inward-facing Lambertian quads (Diffuse BSDF, the albedo of the wall); the ceiling
+- walls: inward-facing Lambertian quads (Diffuse BSDF, the albedo of the wall) that cast no
+  shadow (the room is convex: in glint no wall blocks a shadow ray either); the ceiling
   has a hole exactly where the light is, so nothing is coplanar with the emitter;
 - the light: a one-sided emitter of radiance L_e facing down (an Emission shader of
   strength 1 gives radiance equal to its colour; its back emits nothing);
@@ -179,6 +180,15 @@ def Emitter(bpy, name, radiance):
     return NewMaterial(bpy, name, build)
 
 
+def CastsNoShadow(ob):
+    """A wall of the convex room can stand between no point of the room and the light, so
+    it casts no shadow, as in glint (Scene::Occluded tests the objects only). Cycles would
+    otherwise let float-precision shadow rays that graze the ceiling toward the light's
+    edge hit the ceiling around the hole: measured at 256x256, the top corners' walls came
+    out 0.8% (7.7 sigma) darker than glint."""
+    SetProperty(ob, "visible_shadow", False)
+
+
 def AddMesh(bpy, name, vertices, faces, material):
     mesh = bpy.data.meshes.new(name)
     mesh.from_pydata([tuple(v) for v in vertices], [], faces)
@@ -259,9 +269,10 @@ def BuildRoom(bpy, scene):
         side = wall["side"]
         mat = Diffuse(bpy, f"wall-{side}", wall["reflectance"])
         if side == "ceiling" and light is not None:
-            BuildCeilingWithHole(bpy, (x0, x1, y1, z0, z1), light, mat)
+            ob = BuildCeilingWithHole(bpy, (x0, x1, y1, z0, z1), light, mat)
         else:
-            AddMesh(bpy, wall.get("id", f"W{i + 1}"), sides[side], [[0, 1, 2, 3]], mat)
+            ob = AddMesh(bpy, wall.get("id", f"W{i + 1}"), sides[side], [[0, 1, 2, 3]], mat)
+        CastsNoShadow(ob)
     if light is not None:
         lx0, lx1, lz0, lz1 = LightRect(light)
         ly = light["center"][1]
@@ -293,7 +304,7 @@ def BuildCeilingWithHole(bpy, box, light, mat):
             face = [a, a + 1, a + 5, a + 4]
             if xs[i + 1] > xs[i] and zs[j + 1] > zs[j]:
                 faces.append(face)
-    AddMesh(bpy, "W2", vertices, faces, mat)
+    return AddMesh(bpy, "W2", vertices, faces, mat)
 
 
 def BuildObjects(bpy, scene):

@@ -13,6 +13,7 @@ packages=(
   libcli11-dev        # command line
   libstb-dev          # stb_image_write for PNG
   libopenexr-dev      # OpenEXR output and input
+  openmpi-bin libopenmpi-dev  # glint under mpirun (a render split over ranks)
   libgtest-dev        # unit tests
   libbenchmark-dev    # micro-benchmarks
   python3-matplotlib python3-numpy  # report charts

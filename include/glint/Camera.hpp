@@ -28,6 +28,9 @@ struct RenderOptions {
   // remaining pixels as they were (for SIGINT and SIGTERM).
   const std::atomic<bool>* cancel = nullptr;
   int threads = 0;  // 0: OpenMP's default
+  // A resumed pass (a checkpoint's): pixels that have `pass + 1` complete passes already
+  // are skipped.
+  bool skipDone = false;
   // Called now and then from one thread with (pixels done, pixels in all).
   std::function<void(std::size_t, std::size_t)> progress;
 };
@@ -60,7 +63,16 @@ class Camera {
   // Adds one pass over every pixel, in parallel over pixels. The result depends on the
   // seed and the pass only, never on the number of threads: each pixel has its own
   // random stream for each pass.
-  RenderStats Render(const Integrator& integrator, const RenderOptions& options);
+  RenderStats Render(const Integrator& integrator, const RenderOptions& options) {
+    return RenderChunks(integrator, options, 0, Chunks());
+  }
+  // The same for the pixels of chunks [first, last) only: a pass may be split into
+  // pieces (between which a checkpoint is saved) or spread over processes (MPI), and
+  // the pixels end the same. A chunk is kChunk consecutive pixels, row by row.
+  static constexpr int kChunk = 64;
+  int Chunks() const { return (width_ * height_ + kChunk - 1) / kChunk; }
+  RenderStats RenderChunks(const Integrator& integrator, const RenderOptions& options, int first,
+                           int last);
   // Works out, for every pixel, what its rays will and will not meet in `scene`
   // (PixelShaft): the integrators then skip the tests whose answer is known. The
   // image is the same with or without; call it again if the scene's geometry changes.
@@ -69,8 +81,14 @@ class Camera {
 
   // Forgets all passes.
   void Clear();
+  // Passes a cancel cut short: in the image (what was rendered is saved), not in the
+  // pixels (a checkpoint holds complete passes only, which a resume can continue).
+  const std::vector<std::pair<std::size_t, PixelPass>>& CutShort() const { return cutShort_; }
 
   const Pixel& PixelAt(int x, int y) const { return pixels_[Index(x, y)]; }
+  // Pixel i of the array, row by row (checkpoints and MPI move pixels by index).
+  const Pixel& PixelAt(std::size_t i) const { return pixels_[i]; }
+  Pixel& PixelAt(std::size_t i) { return pixels_[i]; }
   Image ToImage() const;
   // Saves through the mapping function (PNG, PPM) or as linear radiance (PFM).
   void Save(const std::string& path, double exposure) const;
@@ -95,6 +113,7 @@ class Camera {
   // One ray-tree arena per thread, kept from pass to pass so that progressive rendering
   // allocates nothing after the first pass.
   std::vector<RayTree> arenas_;
+  std::vector<std::pair<std::size_t, PixelPass>> cutShort_;
 };
 
 }  // namespace glint

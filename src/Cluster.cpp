@@ -1,0 +1,337 @@
+#include "Cluster.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <thread>
+
+#if defined(GLINT_MPI)
+#include <mpi.h>
+#endif
+
+namespace glint {
+
+namespace {
+
+// Whether an MPI launcher started this process (OpenMPI, MPICH/Hydra, PMIx, Slurm).
+bool UnderMpiLauncher() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "PMI_RANK"}) {
+    if (std::getenv(name) != nullptr) return true;
+  }
+  return false;
+}
+
+#if defined(GLINT_MPI)
+enum Tag : int { kRequest = 1, kReply = 2, kResult = 3, kDone = 4 };
+
+// A range's pixels as sent to rank 0: per pixel r, g, b and the sample count (as a
+// double, exact below 2^53), or -1 for a pixel a resumed pass had done already.
+constexpr std::size_t kPerPixel = 4;
+#endif
+
+}  // namespace
+
+Cluster::Cluster(int& argc, char**& argv) {
+#if defined(GLINT_MPI)
+  if (!UnderMpiLauncher()) return;
+  int provided = 0;
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  started_ = true;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  MPI_Comm node;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &node);
+  MPI_Comm_size(node, &localSize_);
+  MPI_Comm_free(&node);
+#else
+  (void)argc;
+  (void)argv;
+  (void)UnderMpiLauncher;
+#endif
+}
+
+Cluster::~Cluster() {
+#if defined(GLINT_MPI)
+  if (started_) MPI_Finalize();
+#endif
+}
+
+int Cluster::DefaultThreads() const {
+  if (std::getenv("OMP_NUM_THREADS") != nullptr) return omp_get_max_threads();
+  const int node = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  // omp_get_num_procs: the cores this process may run on (a launcher may bind it).
+  return std::max(1, std::min(omp_get_num_procs(), node / std::max(1, localSize_)));
+}
+
+bool Cluster::AllOk(bool ok, std::vector<int>* failedRanks) const {
+  if (failedRanks) failedRanks->clear();
+  if (!Distributed()) {
+    if (!ok && failedRanks) failedRanks->push_back(0);
+    return ok;
+  }
+#if defined(GLINT_MPI)
+  int mine = ok ? 1 : 0;
+  std::vector<int> all(static_cast<std::size_t>(size_));
+  MPI_Allgather(&mine, 1, MPI_INT, all.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  bool every = true;
+  for (int r = 0; r < size_; ++r) {
+    if (all[static_cast<std::size_t>(r)] == 0) {
+      every = false;
+      if (failedRanks) failedRanks->push_back(r);
+    }
+  }
+  return every;
+#else
+  return ok;
+#endif
+}
+
+void Cluster::Broadcast(void* data, std::size_t bytes) const {
+#if defined(GLINT_MPI)
+  if (!Distributed()) return;
+  // In pieces below 2^31 bytes, MPI's count being an int.
+  auto* p = static_cast<char*>(data);
+  constexpr std::size_t kPiece = std::size_t{1} << 30;
+  for (std::size_t done = 0; done < bytes; done += kPiece) {
+    MPI_Bcast(p + done, static_cast<int>(std::min(kPiece, bytes - done)), MPI_BYTE, 0,
+              MPI_COMM_WORLD);
+  }
+  if (Root()) {
+    messages_ += static_cast<std::uint64_t>(size_ - 1);
+    bytes_ += static_cast<std::uint64_t>(size_ - 1) * bytes;
+  }
+#else
+  (void)data;
+  (void)bytes;
+#endif
+}
+
+void Cluster::SumOnRoot(std::uint64_t* values, int n) const {
+#if defined(GLINT_MPI)
+  if (!Distributed()) return;
+  std::vector<std::uint64_t> out(static_cast<std::size_t>(n));
+  MPI_Reduce(values, out.data(), n, MPI_UINT64_T, MPI_SUM, 0, MPI_COMM_WORLD);
+  if (Root()) std::copy(out.begin(), out.end(), values);
+#else
+  (void)values;
+  (void)n;
+#endif
+}
+
+void Cluster::Barrier() const {
+#if defined(GLINT_MPI)
+  if (Distributed()) MPI_Barrier(MPI_COMM_WORLD);
+#endif
+}
+
+namespace {
+
+// The next range of chunks to hand out, guided: a quarter of what is left shared among
+// the ranks, so that the first ranges are large (few messages) and the last are single
+// chunks (no rank waits long for another at the end of a pass).
+int GuidedChunks(int left, int ranks) {
+  return std::max(1, left / (4 * ranks));
+}
+
+#if defined(GLINT_MPI)
+void AppendStats(std::vector<double>& out, const RenderStats& s) {
+  for (const std::uint64_t v : {s.cameraRays, s.reflectedRays, s.refractedRays, s.diffuseRays,
+                                s.shadowRays, s.nonFiniteSamples, s.shadowRaysByShaft}) {
+    out.push_back(static_cast<double>(v));
+  }
+}
+RenderStats StatsAt(const double* p) {
+  RenderStats s;
+  s.cameraRays = static_cast<std::uint64_t>(p[0]);
+  s.reflectedRays = static_cast<std::uint64_t>(p[1]);
+  s.refractedRays = static_cast<std::uint64_t>(p[2]);
+  s.diffuseRays = static_cast<std::uint64_t>(p[3]);
+  s.shadowRays = static_cast<std::uint64_t>(p[4]);
+  s.nonFiniteSamples = static_cast<std::uint64_t>(p[5]);
+  s.shadowRaysByShaft = static_cast<std::uint64_t>(p[6]);
+  return s;
+}
+// A result: first chunk, last chunk, abandoned, 7 counters, then the pixels.
+constexpr std::size_t kHeader = 10;
+#endif
+
+}  // namespace
+
+void Cluster::RenderPass(Camera& camera, const Integrator& integrator, const RenderOptions& options,
+                         RenderStats& stats, const std::function<void()>& betweenBatches) const {
+  if (Distributed()) {
+    if (Root()) {
+      RootPass(camera, integrator, options, stats, betweenBatches);
+    } else {
+      WorkerPass(camera, integrator, options);
+    }
+    return;
+  }
+  if (!betweenBatches) {
+    stats += camera.Render(integrator, options);
+    return;
+  }
+  // One process with a checkpoint: the pass in batches of 32 chunks a thread or more,
+  // between which it is saved (each batch ends on a barrier of the threads: half a
+  // chunk a thread lost, under 2%).
+  const int chunks = camera.Chunks();
+  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+  const int batch = std::max(32 * threads, chunks / 64);
+  for (int first = 0; first < chunks; first += batch) {
+    stats += camera.RenderChunks(integrator, options, first, std::min(chunks, first + batch));
+    if (options.cancel && options.cancel->load()) break;
+    betweenBatches();
+  }
+}
+
+#if defined(GLINT_MPI)
+
+void Cluster::RootPass(Camera& camera, const Integrator& integrator, const RenderOptions& options,
+                       RenderStats& stats, const std::function<void()>& betweenBatches) const {
+  const int chunks = camera.Chunks();
+  const std::size_t count =
+      static_cast<std::size_t>(camera.Width()) * static_cast<std::size_t>(camera.Height());
+  int next = 0;         // the first chunk not handed out
+  int pending = 0;      // ranges handed to other ranks whose result has not come
+  int doneWorkers = 0;  // ranks that have said they are done with this pass
+  int requests = 0;     // requests received in this pass
+  std::vector<double> buffer;
+  const auto cancelled = [&]() { return options.cancel && options.cancel->load(); };
+  const auto take = [&](int range[2]) {
+    if (cancelled() || next >= chunks) {
+      range[0] = range[1] = -1;
+      return false;
+    }
+    range[0] = next;
+    range[1] = next = std::min(chunks, next + GuidedChunks(chunks - next, size_));
+    return true;
+  };
+  // Answers what the other ranks sent; with `block`, waits for one message first.
+  const auto serve = [&](bool block) {
+    for (;;) {
+      MPI_Status status;
+      int flag = 1;
+      if (block) {
+        MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
+      } else {
+        MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
+      }
+      if (!flag) return;
+      block = false;
+      const int from = status.MPI_SOURCE;
+      if (status.MPI_TAG == kRequest || status.MPI_TAG == kDone) {
+        int unused = 0;
+        MPI_Recv(&unused, 1, MPI_INT, from, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        if (status.MPI_TAG == kDone) {
+          ++doneWorkers;
+          continue;
+        }
+        ++requests;
+        int range[2];
+        pending += take(range) ? 1 : 0;
+        MPI_Send(range, 2, MPI_INT, from, kReply, MPI_COMM_WORLD);
+        ++messages_;
+        bytes_ += sizeof range;
+        continue;
+      }
+      int n = 0;
+      MPI_Get_count(&status, MPI_DOUBLE, &n);
+      buffer.resize(static_cast<std::size_t>(n));
+      MPI_Recv(buffer.data(), n, MPI_DOUBLE, from, kResult, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      --pending;
+      stats += StatsAt(&buffer[3]);
+      if (buffer[2] != 0.0) continue;  // abandoned at an interrupt: the pixels stay as they were
+      const std::size_t first = static_cast<std::size_t>(buffer[0]) * Camera::kChunk;
+      const std::size_t last =
+          std::min(count, static_cast<std::size_t>(buffer[1]) * Camera::kChunk);
+      for (std::size_t i = first; i < last; ++i) {
+        const double* p = &buffer[kHeader + (i - first) * kPerPixel];
+        if (p[3] < 0.0) continue;  // done before the resume
+        PixelPass pass;
+        pass.sum = Colour(p[0], p[1], p[2]);
+        pass.samples = static_cast<std::uint64_t>(p[3]);
+        camera.PixelAt(i).Add(pass);  // in pass order, as one process adds it
+      }
+    }
+  };
+  // Every other rank's first request answered before rank 0 takes a range of its own:
+  // the first ranges are the largest.
+  while (requests < size_ - 1) serve(true);
+  for (int range[2]; take(range);) {
+    stats += camera.RenderChunks(integrator, options, range[0], range[1]);
+    if (betweenBatches && !cancelled()) betweenBatches();
+    serve(false);
+  }
+  while (pending > 0 || doneWorkers < size_ - 1) serve(true);
+}
+
+void Cluster::WorkerPass(Camera& camera, const Integrator& integrator,
+                         const RenderOptions& options) const {
+  const std::size_t count =
+      static_cast<std::size_t>(camera.Width()) * static_cast<std::size_t>(camera.Height());
+  const auto cancelled = [&]() { return options.cancel && options.cancel->load(); };
+  const auto send = [&](const void* data, int n, MPI_Datatype type, std::size_t size, int tag) {
+    MPI_Send(data, n, type, 0, tag, MPI_COMM_WORLD);
+    ++messages_;
+    bytes_ += static_cast<std::uint64_t>(n) * size;
+  };
+  // Two requests in flight: while this rank renders one range, the answer to its next
+  // request waits in the queue, however long rank 0 takes to look at its messages.
+  int outstanding = 0;
+  const int request = 0;
+  for (int i = 0; i < 2; ++i, ++outstanding) send(&request, 1, MPI_INT, sizeof(int), kRequest);
+  bool noMore = false;
+  std::vector<double> buffer;
+  std::vector<char> skip;
+  while (outstanding > 0) {
+    int range[2];
+    MPI_Recv(range, 2, MPI_INT, 0, kReply, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    --outstanding;
+    if (range[0] < 0) {
+      noMore = true;
+      continue;
+    }
+    const std::size_t first = static_cast<std::size_t>(range[0]) * Camera::kChunk;
+    const std::size_t last = std::min(count, static_cast<std::size_t>(range[1]) * Camera::kChunk);
+    // This rank's pixels start each pass empty: rank 0 adds the pass to its own sums.
+    skip.assign(last - first, 0);
+    for (std::size_t i = first; i < last; ++i) {
+      Pixel& pixel = camera.PixelAt(i);
+      skip[i - first] = options.skipDone && pixel.Passes() > options.pass ? 1 : 0;
+      if (skip[i - first] == 0) pixel.Restore(Colour(0.0), 0, options.pass);
+    }
+    RenderStats batch;
+    if (!cancelled()) batch = camera.RenderChunks(integrator, options, range[0], range[1]);
+    buffer.assign(
+        {static_cast<double>(range[0]), static_cast<double>(range[1]), cancelled() ? 1.0 : 0.0});
+    AppendStats(buffer, batch);
+    for (std::size_t i = first; i < last; ++i) {
+      const Pixel& pixel = camera.PixelAt(i);
+      if (skip[i - first] != 0) {
+        buffer.insert(buffer.end(), {0.0, 0.0, 0.0, -1.0});
+        continue;
+      }
+      if (pixel.Passes() != options.pass + 1) buffer[2] = 1.0;  // cut short: abandoned
+      const Colour s = pixel.Sum();
+      buffer.insert(buffer.end(), {s.x, s.y, s.z, static_cast<double>(pixel.Samples())});
+    }
+    send(buffer.data(), static_cast<int>(buffer.size()), MPI_DOUBLE, sizeof(double), kResult);
+    if (!noMore && !cancelled()) {
+      send(&request, 1, MPI_INT, sizeof(int), kRequest);
+      ++outstanding;
+    }
+  }
+  send(&request, 1, MPI_INT, sizeof(int), kDone);
+}
+
+#else
+
+void Cluster::RootPass(Camera&, const Integrator&, const RenderOptions&, RenderStats&,
+                       const std::function<void()>&) const {}
+void Cluster::WorkerPass(Camera&, const Integrator&, const RenderOptions&) const {}
+
+#endif
+
+}  // namespace glint

@@ -134,32 +134,31 @@ def NewMaterial(bpy, name, build):
     return mat
 
 
-def Diffuse(bpy, name, rho):
+def Bsdf(bpy, name, node, properties, inputs):
+    """A material of one BSDF node, its properties and inputs set through the helpers."""
     def build(tree):
-        n = tree.nodes.new("ShaderNodeBsdfDiffuse")
-        SetInput(n, "Color", (*rho, 1.0))
-        SetInput(n, "Roughness", 0.0)  # Lambert (Oren-Nayar with sigma 0)
+        n = tree.nodes.new(node)
+        for key, value in properties.items():
+            SetProperty(n, key, value)
+        for key, value in inputs.items():
+            SetInput(n, key, value)
         return n.outputs["BSDF"]
     return NewMaterial(bpy, name, build)
+
+
+def Diffuse(bpy, name, rho):
+    # Roughness 0: Lambert (Oren-Nayar with sigma 0).
+    return Bsdf(bpy, name, "ShaderNodeBsdfDiffuse", {}, {"Color": (*rho, 1.0), "Roughness": 0.0})
 
 
 def Mirror(bpy, name, rho):
-    def build(tree):
-        n = tree.nodes.new("ShaderNodeBsdfGlossy")
-        SetProperty(n, "distribution", "SHARP")
-        SetInput(n, "Color", (*rho, 1.0))
-        return n.outputs["BSDF"]
-    return NewMaterial(bpy, name, build)
+    return Bsdf(bpy, name, "ShaderNodeBsdfGlossy", {"distribution": "SHARP"},
+                {"Color": (*rho, 1.0)})
 
 
 def Glass(bpy, name, ior):
-    def build(tree):
-        n = tree.nodes.new("ShaderNodeBsdfGlass")
-        SetProperty(n, "distribution", "SHARP")
-        SetInput(n, "Color", (1.0, 1.0, 1.0, 1.0))
-        SetInput(n, "IOR", ior)
-        return n.outputs["BSDF"]
-    return NewMaterial(bpy, name, build)
+    return Bsdf(bpy, name, "ShaderNodeBsdfGlass", {"distribution": "SHARP"},
+                {"Color": (1.0, 1.0, 1.0, 1.0), "IOR": ior})
 
 
 def Emitter(bpy, name, radiance):

@@ -273,13 +273,14 @@ RenderResult RunPasses(Camera& camera, const Integrator& integrator, const Rende
   }
   const nlohmann::json identity = RenderIdentity(args, s);
   double lastSave = elapsed();
-  const auto save = [&](int currentRays) {
+  // `stats`: the counters of the finished passes and of the pass under way so far.
+  const auto save = [&](int currentRays, const RenderStats& stats) {
     CheckpointProgress progress;
     progress.passes = r.passes;
     progress.spp = r.spp;
     progress.currentRays = currentRays;
     progress.seconds = elapsed();
-    progress.stats = r.stats;
+    progress.stats = stats;
     try {
       SaveCheckpoint(args.checkpoint, identity, camera, progress);
     } catch (const std::exception& e) {  // the render goes on; the next save tries again
@@ -290,11 +291,9 @@ RenderResult RunPasses(Camera& camera, const Integrator& integrator, const Rende
   RenderStats passStats;
   const std::function<void()> betweenBatches = [&]() {
     if (elapsed() - lastSave < args.checkpointEvery) return;
-    RenderStats sofar = r.stats;
-    std::swap(r.stats, sofar);
-    r.stats += passStats;  // the rays of the pass so far count too
-    save(rays);
-    std::swap(r.stats, sofar);
+    RenderStats stats = r.stats;
+    stats += passStats;
+    save(rays, stats);
   };
   const bool checkpointing = !args.checkpoint.empty() && cluster.Root();
   while (rays > 0) {
@@ -319,7 +318,7 @@ RenderResult RunPasses(Camera& camera, const Integrator& integrator, const Rende
     rays = progressive ? schedule.Next(rays, passSeconds, args.timeBudget - elapsed()) : 0;
     rays = cluster.Broadcast(rays);
   }
-  if (checkpointing) save(r.interrupted ? options.raysPerPixel : 0);
+  if (checkpointing) save(r.interrupted ? options.raysPerPixel : 0, r.stats);
   r.seconds = elapsed();
   r.interrupted = r.interrupted || interrupted.load();
   bar.Finish();

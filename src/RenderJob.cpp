@@ -172,6 +172,9 @@ void PrepareShaftsIfTheyPay(Camera& camera, const Integrator& integrator, const 
   }
 }
 
+namespace {
+
+// What a checkpoint belongs to: a resume refuses one whose fields differ.
 nlohmann::json RenderIdentity(const RenderArgs& args, const RenderSetup& s) {
   std::ifstream in(args.scene, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -194,8 +197,6 @@ nlohmann::json RenderIdentity(const RenderArgs& args, const RenderSetup& s) {
   }
   return j;
 }
-
-namespace {
 
 // A resumed render's progress on every rank: rank 0 reads the checkpoint, the others
 // learn how far it had come and which pixels have passed (their sums stay on rank 0).

@@ -32,23 +32,6 @@ T Get(const char*& p) {
   return value;
 }
 
-nlohmann::json StatsJson(const RenderStats& s) {
-  return {s.cameraRays, s.reflectedRays,    s.refractedRays,    s.diffuseRays,
-          s.shadowRays, s.nonFiniteSamples, s.shadowRaysByShaft};
-}
-
-RenderStats StatsFrom(const nlohmann::json& j) {
-  RenderStats s;
-  s.cameraRays = j.at(0);
-  s.reflectedRays = j.at(1);
-  s.refractedRays = j.at(2);
-  s.diffuseRays = j.at(3);
-  s.shadowRays = j.at(4);
-  s.nonFiniteSamples = j.at(5);
-  s.shadowRaysByShaft = j.at(6);
-  return s;
-}
-
 }  // namespace
 
 std::uint64_t Fingerprint(const std::string& bytes) {
@@ -65,7 +48,7 @@ void SaveCheckpoint(const std::string& path, const nlohmann::json& identity, con
   const nlohmann::json header = {
       {"identity", identity},        {"passes", progress.passes},
       {"spp", progress.spp},         {"current_rays", progress.currentRays},
-      {"seconds", progress.seconds}, {"stats", StatsJson(progress.stats)}};
+      {"seconds", progress.seconds}, {"stats", progress.stats.ToCounters()}};
   const std::size_t count =
       static_cast<std::size_t>(camera.Width()) * static_cast<std::size_t>(camera.Height());
   std::string out = kMagic;
@@ -126,7 +109,7 @@ CheckpointProgress LoadCheckpoint(const std::string& path, const nlohmann::json&
   progress.spp = header.at("spp");
   progress.currentRays = header.at("current_rays");
   progress.seconds = header.at("seconds");
-  progress.stats = StatsFrom(header.at("stats"));
+  progress.stats = RenderStats::FromCounters(header.at("stats").get<RenderStats::Counters>());
   return progress;
 }
 

@@ -136,25 +136,17 @@ int GuidedChunks(int left, int ranks) {
 }
 
 #if defined(GLINT_MPI)
+// The counters travel as doubles (exact below 2^53) in a result's header.
 void AppendStats(std::vector<double>& out, const RenderStats& s) {
-  for (const std::uint64_t v : {s.cameraRays, s.reflectedRays, s.refractedRays, s.diffuseRays,
-                                s.shadowRays, s.nonFiniteSamples, s.shadowRaysByShaft}) {
-    out.push_back(static_cast<double>(v));
-  }
+  for (const std::uint64_t v : s.ToCounters()) out.push_back(static_cast<double>(v));
 }
 RenderStats StatsAt(const double* p) {
-  RenderStats s;
-  s.cameraRays = static_cast<std::uint64_t>(p[0]);
-  s.reflectedRays = static_cast<std::uint64_t>(p[1]);
-  s.refractedRays = static_cast<std::uint64_t>(p[2]);
-  s.diffuseRays = static_cast<std::uint64_t>(p[3]);
-  s.shadowRays = static_cast<std::uint64_t>(p[4]);
-  s.nonFiniteSamples = static_cast<std::uint64_t>(p[5]);
-  s.shadowRaysByShaft = static_cast<std::uint64_t>(p[6]);
-  return s;
+  RenderStats::Counters c;
+  for (std::size_t i = 0; i < c.size(); ++i) c[i] = static_cast<std::uint64_t>(p[i]);
+  return RenderStats::FromCounters(c);
 }
-// A result: first chunk, last chunk, abandoned, 7 counters, then the pixels.
-constexpr std::size_t kHeader = 10;
+// A result: first chunk, last chunk, abandoned, the counters, then the pixels.
+constexpr std::size_t kHeader = 3 + std::tuple_size_v<RenderStats::Counters>;
 #endif
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Counters of one render: rays by kind and samples dropped for being NaN or Inf.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 namespace glint {
@@ -14,6 +15,24 @@ struct RenderStats {
   std::uint64_t nonFiniteSamples = 0;  // NaN or Inf samples, dropped before averaging
   // Of shadowRays, those whose answer (unblocked) the pixel's shaft knew in advance.
   std::uint64_t shadowRaysByShaft = 0;
+
+  // The counters in a fixed order, for a checkpoint's header or an MPI message.
+  using Counters = std::array<std::uint64_t, 7>;
+  Counters ToCounters() const {
+    return {cameraRays, reflectedRays,    refractedRays,    diffuseRays,
+            shadowRays, nonFiniteSamples, shadowRaysByShaft};
+  }
+  static RenderStats FromCounters(const Counters& c) {
+    RenderStats s;
+    s.cameraRays = c[0];
+    s.reflectedRays = c[1];
+    s.refractedRays = c[2];
+    s.diffuseRays = c[3];
+    s.shadowRays = c[4];
+    s.nonFiniteSamples = c[5];
+    s.shadowRaysByShaft = c[6];
+    return s;
+  }
 
   std::uint64_t TotalRays() const {
     return cameraRays + reflectedRays + refractedRays + diffuseRays + shadowRays;

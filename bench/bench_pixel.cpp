@@ -20,19 +20,19 @@ void RenderPixels(benchmark::State& state, const Integrator& integrator, int spp
   int i = 0;
   for (auto _ : state) {
     Pixel pixel;
-    Pcg32 rng = Pcg32::ForPixel(1, static_cast<std::uint64_t>(i));
+    Sampler sampler(Pcg32::ForPixel(1, static_cast<std::uint64_t>(i)));
     // Pixels in a scrambled order (an odd multiplier permutes 0..65535), so that
     // successive iterations sample the whole image.
     const auto index = static_cast<int>((static_cast<unsigned>(i) * 40503U) & 0xffffU);
     const int x = index % 256;
     const int y = index / 256;
     pixel.SetShaft(camera.PixelAt(x, y).Shaft());
-    pixel.Render(camera, x, y, spp, integrator, rng, trees, stats);
+    pixel.Render(camera, x, y, spp, integrator, sampler, trees, stats);
     benchmark::DoNotOptimize(pixel);
     ++i;
   }
   state.counters["rays/s"] =
-      benchmark::Counter(static_cast<double>(stats.TotalRays()), benchmark::Counter::kIsRate);
+      benchmark::Counter(static_cast<double>(stats.TracedRays()), benchmark::Counter::kIsRate);
   state.counters["paths/s"] =
       benchmark::Counter(static_cast<double>(stats.cameraRays), benchmark::Counter::kIsRate);
 }

@@ -4,6 +4,7 @@
 
 #include "RaySets.hpp"
 #include "glint/Phong.hpp"
+#include "glint/Sampler.hpp"
 
 namespace glint::bench {
 namespace {
@@ -28,6 +29,34 @@ void RngForPixel(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(RngForPixel);
+
+// One terminal wall's path of numbers, per sample: the pixel point and the light point
+// (dimensions 0-3), for each sampler; arg 0 random, 1 stratified, 2 sobol.
+void SamplerTerminalPath(benchmark::State& state) {
+  const auto kind = static_cast<SamplerKind>(state.range(0));
+  Sampler sampler(kind, 1, 7, 0, 0, 64);
+  int i = 0;
+  for (auto _ : state) {
+    sampler.StartSample(i++ & 63);
+    benchmark::DoNotOptimize(sampler.Get2D(SampleDimension::kPixel));
+    benchmark::DoNotOptimize(sampler.Get2D(SampleDimension::Light(0)));
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.SetLabel(SamplerName(kind));
+}
+BENCHMARK(SamplerTerminalPath)->Arg(0)->Arg(1)->Arg(2);
+
+// A pixel's sampler for one pass (sobol makes its first groups' seeds here).
+void SamplerForPixel(benchmark::State& state) {
+  const auto kind = static_cast<SamplerKind>(state.range(0));
+  std::uint64_t pixel = 0;
+  for (auto _ : state) {
+    Sampler sampler(kind, 1, pixel++, 0, 0, 64);
+    benchmark::DoNotOptimize(sampler);
+  }
+  state.SetLabel(SamplerName(kind));
+}
+BENCHMARK(SamplerForPixel)->Arg(0)->Arg(1)->Arg(2);
 
 const Material& O1() {
   return CanonicalScene().spheres[0].GetMaterial();

@@ -29,10 +29,12 @@ Row Measure(const BenchArgs& args, const std::string& mode, int threads) {
   r.size = args.size;
   r.threads = threads;
   r.spp = mode == "mc" ? args.mcSpp : args.whittedSpp;
+  r.sampler = args.sampler;
   const RenderSetup s = Prepare(r, false);
   Camera camera(s.scene.wall, s.scene.camera.eye, s.width, s.height);
   const std::unique_ptr<Integrator> integrator = MakeIntegrator(r, s);
   RenderOptions options;
+  options.sampler = SamplerFromArgs(r);
   options.threads = threads;
   options.raysPerPixel = 1;
   camera.Render(*integrator, options);  // warm-up: arenas, caches, page faults
@@ -60,12 +62,14 @@ std::string ToJson(const BenchArgs& args, const std::vector<Row>& rows) {
   j["repeat"] = args.repeat;
   j["peak_rss_mib"] = PeakResidentMiB();
   for (const Row& row : rows) {
-    const double rays = static_cast<double>(row.stats.TotalRays());
+    const double rays = static_cast<double>(row.stats.TracedRays());
     j["runs"].push_back({{"mode", row.mode},
                          {"spp", row.spp},
                          {"threads", row.threads},
                          {"seconds", row.seconds},
-                         {"rays", row.stats.TotalRays()},
+                         {"sampler", args.sampler},
+                         {"rays_traced", row.stats.TracedRays()},
+                         {"visibility_answered_without_a_ray", row.stats.shadowRaysByShaft},
                          {"camera_paths", row.stats.cameraRays},
                          {"mrays_per_second", rays / row.seconds / 1e6},
                          {"mrays_per_second_per_thread", rays / row.seconds / 1e6 / row.threads}});
@@ -91,10 +95,12 @@ int RunBenchRanks(const BenchArgs& args, const Cluster& cluster) {
     r.size = args.size;
     r.threads = 1;
     r.spp = mode == "mc" ? args.mcSpp : args.whittedSpp;
+    r.sampler = args.sampler;
     const RenderSetup s = Prepare(r, false);
     Camera camera(s.scene.wall, s.scene.camera.eye, s.width, s.height);
     const std::unique_ptr<Integrator> integrator = MakeIntegrator(r, s);
     RenderOptions options;
+    options.sampler = SamplerFromArgs(r);
     options.threads = 1;
     options.raysPerPixel = 1;
     camera.Render(*integrator, options);  // warm-up on every rank
@@ -128,10 +134,11 @@ int RunBenchRanks(const BenchArgs& args, const Cluster& cluster) {
     std::uint64_t all[2] = {messages, bytes};
     cluster.SumOnRoot(all, 2);
     if (cluster.Root()) {
-      const double rays = static_cast<double>(bestStats.TotalRays()) / best / 1e6;
+      const double rays = static_cast<double>(bestStats.TracedRays()) / best / 1e6;
       std::printf("%-8s %5d %6d %9.3f %9.2f %12.2f %8s %9s %11s\n", mode.c_str(), one.spp, 1,
-                  one.seconds, static_cast<double>(one.stats.TotalRays()) / one.seconds / 1e6,
-                  static_cast<double>(one.stats.TotalRays()) / one.seconds / 1e6, "1.00", "0", "0");
+                  one.seconds, static_cast<double>(one.stats.TracedRays()) / one.seconds / 1e6,
+                  static_cast<double>(one.stats.TracedRays()) / one.seconds / 1e6, "1.00", "0",
+                  "0");
       std::printf("%-8s %5d %6d %9.3f %9.2f %12.2f %8.2f %9llu %11llu\n", mode.c_str(),
                   s.raysPerPass, cluster.Size(), best, rays, rays / cluster.Size(),
                   one.seconds / best, static_cast<unsigned long long>(all[0]),
@@ -154,21 +161,25 @@ int RunBench(const BenchArgs& args, const Cluster& cluster) {
     Prepare(check, false);
   }
   const bool square = args.size.find_first_of("xX") == std::string::npos;
-  std::printf("glint bench: %s, %s%s%s pixels, best of %d run%s, seed 1\n", args.scene.c_str(),
-              args.size.c_str(), square ? "x" : "", square ? args.size.c_str() : "", args.repeat,
-              args.repeat == 1 ? "" : "s");
-  std::printf("%-8s %5s %7s %9s %11s %9s %14s %8s\n", "mode", "spp", "threads", "seconds",
-              "Mpaths/s", "Mrays/s", "Mrays/s/thread", "speedup");
+  std::printf(
+      "glint bench: %s, %s%s%s pixels, best of %d run%s, seed 1, sampler %s; rays traced (a "
+      "shadow test a pixel's shaft answered is not a ray: 'shaft M/s')\n",
+      args.scene.c_str(), args.size.c_str(), square ? "x" : "", square ? args.size.c_str() : "",
+      args.repeat, args.repeat == 1 ? "" : "s", args.sampler.c_str());
+  std::printf("%-8s %5s %7s %9s %11s %9s %14s %8s %11s\n", "mode", "spp", "threads", "seconds",
+              "Mpaths/s", "Mrays/s", "Mrays/s/thread", "speedup", "shaft M/s");
   std::vector<Row> rows;
   for (const std::string& mode : args.modes) {
     double first = 0.0;
     for (const int threads : args.threads) {
       const Row row = Measure(args, mode, threads);
       if (first == 0.0) first = row.seconds;  // speedups are relative to the first count
-      const double rays = static_cast<double>(row.stats.TotalRays()) / row.seconds / 1e6;
-      std::printf("%-8s %5d %7d %9.3f %11.2f %9.2f %14.2f %8.2f\n", mode.c_str(), row.spp, threads,
-                  row.seconds, static_cast<double>(row.stats.cameraRays) / row.seconds / 1e6, rays,
-                  rays / threads, first / row.seconds);
+      const double rays = static_cast<double>(row.stats.TracedRays()) / row.seconds / 1e6;
+      std::printf("%-8s %5d %7d %9.3f %11.2f %9.2f %14.2f %8.2f %11.2f\n", mode.c_str(), row.spp,
+                  threads, row.seconds,
+                  static_cast<double>(row.stats.cameraRays) / row.seconds / 1e6, rays,
+                  rays / threads, first / row.seconds,
+                  static_cast<double>(row.stats.shadowRaysByShaft) / row.seconds / 1e6);
       std::fflush(stdout);
       rows.push_back(row);
     }

@@ -18,6 +18,7 @@ struct BenchArgs {
   int whittedSpp = 0;  // 0: the scene's value for Whitted mode
   int repeat = 3;
   std::vector<std::string> modes{"mc", "whitted"};
+  std::string sampler = "sobol";
   std::string json;  // optional: the table as JSON
 };
 

@@ -96,10 +96,11 @@ RenderStats Camera::RenderChunks(const Integrator& integrator, const RenderOptio
       for (int i = chunk * kChunk; i < end; ++i) {
         Pixel& pixel = pixels_[static_cast<std::size_t>(i)];
         if (options.skipDone && pixel.Passes() > options.pass) continue;  // resumed: done
-        Pcg32 rng = Pcg32::ForPixel(options.seed, static_cast<std::uint64_t>(i), options.pass);
+        Sampler sampler(options.sampler, options.seed, static_cast<std::uint64_t>(i), options.pass,
+                        options.firstSample, options.raysPerPixel);
         const PixelPass pass =
-            pixel.TracePass(*this, i % width_, i / width_, options.raysPerPixel, integrator, rng,
-                            trees, stats, false, options.cancel);
+            pixel.TracePass(*this, i % width_, i / width_, options.raysPerPixel, integrator,
+                            sampler, trees, stats, false, options.cancel);
         if (pass.complete) {
           pixel.Add(pass);
         } else if (pass.samples > 0) {

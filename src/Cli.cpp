@@ -152,8 +152,9 @@ void AddRenderOptions(CLI::App* render, RenderArgs& args, bool outputs) {
   }
   if (outputs)
     render->add_option("--stats", args.statsPath,
-                       "Write timing and ray counts by kind (camera, reflected, refracted, "
-                       "diffuse, shadow) and the NaN/Inf sample count as JSON to this file");
+                       "Write timing, the rays traced by kind (camera, reflected, refracted, "
+                       "diffuse, shadow; rays.traced in all), the shadow tests answered "
+                       "without a ray, and the NaN/Inf sample count as JSON to this file");
   render->add_option("--set", args.overrides,
                      "Override a scene value by JSON pointer, repeatable: "
                      "--set /objects/1/ior=1.3");
@@ -187,6 +188,15 @@ void AddRenderOptions(CLI::App* render, RenderArgs& args, bool outputs) {
                    "Monte Carlo, at Phong objects: 'mis' (light and BRDF sampling, power "
                    "heuristic), 'light' (light sampling only) or 'brdf' (BRDF sampling only)")
       ->check(CLI::IsMember({"mis", "light", "brdf"}))
+      ->capture_default_str();
+  render
+      ->add_option("--sampler", args.sampler,
+                   "Both modes: where each random decision's numbers come from: 'random' "
+                   "(independent uniforms, the design's random number generator), "
+                   "'stratified' (jittered strata for the pixel and the first light point "
+                   "and direction) or 'sobol' (an Owen-scrambled Sobol sequence per pixel; "
+                   "passes continue it; the default: lowest error at equal time)")
+      ->check(CLI::IsMember({"random", "stratified", "sobol"}))
       ->capture_default_str();
   render->add_flag("-q,--quiet", args.quiet, "No progress bar and no summary line");
 }
@@ -228,8 +238,8 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
                    "Cumulative seconds at which to measure instead, e.g. 0.25,0.5,1,2");
   conv->add_option("--compare", converge.compare,
                    "Compare values of one switch in one chart: strategy=mis,light,brdf, "
-                   "glass=split,choose, fresnel=exact,small-angle, walls=terminal,diffuse or "
-                   "branches=1,2,4");
+                   "glass=split,choose, fresnel=exact,small-angle, walls=terminal,diffuse, "
+                   "branches=1,2,4 or sampler=random,stratified,sobol");
   TreeArgs tree;
   CLI::App* treeCommand = app.add_subcommand(
       "tree", "Write the ray trees of one pixel as a Graphviz graph (render it with dot -Tpng)");
@@ -244,7 +254,8 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
   CLI::App* benchCommand = app.add_subcommand(
       "bench",
       "Throughput of a scene in both modes at one or more thread counts: camera paths/s, "
-      "rays/s (all kinds) and rays/s per thread, speedup, peak memory (see BENCHMARKS.md)");
+      "rays traced/s (all kinds) and per thread, speedup, shadow tests answered without a "
+      "ray, peak memory (see BENCHMARKS.md)");
   benchCommand->footer(kExitCodes);
   benchCommand->add_option("scene", bench.scene, "Scene file (JSON)")->capture_default_str();
   benchCommand->add_option("--size", bench.size, "Image size, N or WxH")->capture_default_str();
@@ -265,6 +276,9 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
       ->capture_default_str();
   benchCommand->add_option("--repeat", bench.repeat, "Timed runs per row; the best one counts")
       ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  benchCommand->add_option("--sampler", bench.sampler, "Sampler: random, stratified or sobol")
+      ->check(CLI::IsMember({"random", "stratified", "sobol"}))
       ->capture_default_str();
   benchCommand->add_option("--json", bench.json, "Also write the table as JSON to this file");
 
@@ -304,9 +318,9 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
       ->capture_default_str();
 
   conv->add_option("--csv", converge.csv, "CSV of the measurements")->capture_default_str();
-  conv->add_option(
-          "--chart", converge.chart,
-          "Log-log chart of RMSE against time (PNG, drawn with matplotlib); empty for none")
+  conv->add_option("--chart", converge.chart,
+                   "Log-log charts of relative MSE and of RMSE against time (PNG, drawn with "
+                   "matplotlib); empty for none")
       ->capture_default_str();
 
   if (argc > 1 && argv[1][0] != '-') {

@@ -54,7 +54,8 @@ std::vector<Variant> ParseVariants(const ConvergeArgs& a) {
   std::string value;
   while (std::getline(in, value, ',')) {
     Variant v{key + "=" + value, a.render};
-    if (key != "fresnel") v.args.monteCarloSwitches.push_back("--compare " + key);
+    if (key != "fresnel" && key != "sampler")
+      v.args.monteCarloSwitches.push_back("--compare " + key);
     const auto allow = [&](std::initializer_list<const char*> ok) {
       for (const char* o : ok) {
         if (value == o) return;
@@ -73,6 +74,9 @@ std::vector<Variant> ParseVariants(const ConvergeArgs& a) {
     } else if (key == "walls") {
       allow({"terminal", "diffuse"});
       v.args.walls = value;
+    } else if (key == "sampler") {
+      allow({"random", "stratified", "sobol"});
+      v.args.sampler = value;
     } else if (key == "branches") {
       const int b = std::atoi(value.c_str());
       if (b < 1 || b > MonteCarloIntegrator::kMaxBranches || std::to_string(b) != value) {
@@ -81,7 +85,7 @@ std::vector<Variant> ParseVariants(const ConvergeArgs& a) {
       v.args.branches = b;
     } else {
       throw InputError("--compare " + a.compare +
-                       ": KEY must be strategy, glass, fresnel, walls or branches");
+                       ": KEY must be strategy, glass, fresnel, walls, branches or sampler");
     }
     out.push_back(v);
   }
@@ -135,6 +139,7 @@ int RunConverge(const ConvergeArgs& a) {
     const std::unique_ptr<Integrator> integrator = MakeIntegrator(v.args, s);
     RenderOptions options;
     options.seed = v.args.seed;
+    options.sampler = SamplerFromArgs(v.args);
     options.threads = v.args.threads;
     options.cancel = &interrupted;
     // A warm-up pass (threads started, arenas grown, pages touched), then a clean start.
@@ -158,6 +163,7 @@ int RunConverge(const ConvergeArgs& a) {
         options.raysPerPixel =
             byTime ? rays : static_cast<int>(steps[k] - static_cast<double>(spp));
         options.pass = pass++;
+        options.firstSample = spp;
         const auto start = std::chrono::steady_clock::now();
         camera.Render(*integrator, options);
         const double passSeconds =
@@ -171,9 +177,10 @@ int RunConverge(const ConvergeArgs& a) {
                     CompareImages(camera.ToImage(), reference)};
       rows.push_back(row);
       std::fprintf(stderr,
-                   "glint converge: %s, %llu rays/pixel, %.3f s: RMSE %.5g, block RMSE %.5g\n",
+                   "glint converge: %s, %llu rays/pixel, %.3f s: RMSE %.5g, relative MSE %.5g, "
+                   "block RMSE %.5g\n",
                    v.name.c_str(), static_cast<unsigned long long>(spp), seconds, row.error.rmse,
-                   row.error.blockRmse);
+                   row.error.relativeMse, row.error.blockRmse);
     }
   }
   WriteFileAtomically(interrupted.load() ? PartialPath(a.csv) : a.csv, Csv(rows));

@@ -24,7 +24,7 @@ MonteCarloIntegrator::MonteCarloIntegrator(const Scene& scene, MonteCarloOptions
 }
 
 Colour MonteCarloIntegrator::Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,
-                                   Pcg32& rng, RenderStats& stats) const {
+                                   Sampler& sampler, RenderStats& stats) const {
   if (shaft.roomOnly && options_.walls == MonteCarloOptions::Walls::Terminal) {
     // Four camera rays in five: the pixel's shaft holds only the room, so the ray ends
     // on a known wall and spawns nothing. None of TraceNode's machinery is needed.
@@ -33,15 +33,17 @@ Colour MonteCarloIntegrator::Trace(RayTree& tree, std::uint32_t root, const Pixe
     scene_.IntersectRoom(ray.start, ray.direction, shaft.side, hit);
     ray.end = hit.point;
     ray.object = hit.object;
-    return EndAtTerminalWall(ray, hit, FacingNormal(ray.direction, hit.normal), rng, stats,
+    return EndAtTerminalWall(ray, hit, FacingNormal(ray.direction, hit.normal), 0, sampler, stats,
                              shaft.areaLightVisible);
   }
-  return TraceNode(tree, root, root, rng, stats, shaft);
+  return TraceNode(tree, root, root, sampler, stats, shaft);
 }
 
-Colour MonteCarloIntegrator::EndAtTerminalWall(Ray& ray, const Hit& hit, vec3 n, Pcg32& rng,
-                                               RenderStats& stats, bool unoccluded) const {
-  const Colour colour = DirectLight(hit, ray.direction, n, 0.0, rng, stats, unoccluded);
+Colour MonteCarloIntegrator::EndAtTerminalWall(Ray& ray, const Hit& hit, vec3 n, std::uint32_t node,
+                                               Sampler& sampler, RenderStats& stats,
+                                               bool unoccluded) const {
+  const Colour colour = DirectLight(hit, ray.direction, n, 0.0,
+                                    sampler.Get2D(SampleDimension::Light(node)), stats, unoccluded);
   ray.final = true;
   ray.colour = colour;
   return colour;
@@ -80,22 +82,26 @@ Colour MonteCarloIntegrator::DirectLightPhong(const Hit& hit, vec3 d, vec3 n, do
   return w * ls.Le * f * (cosTheta * ls.invPdf);
 }
 
-int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, Pcg32& rng,
-                                  Candidate* out) const {
+int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, std::uint32_t node,
+                                  Sampler& sampler, Candidate* out) const {
   const Material& m = *hit.material;
   const vec3 d = ray.direction;
   switch (m.type) {
     case MaterialType::Lambertian: {
       if (options_.walls == MonteCarloOptions::Walls::Terminal) return 0;
       // Cosine sampling: f cos / p = (rho / pi) cos / (cos / pi) = rho.
-      const vec3 w = Frame::FromZ(n).ToWorld(SampleCosineHemisphere(rng.Uniform(), rng.Uniform()));
+      const Sample2 uv = sampler.Get2D(SampleDimension::Scatter(node));
+      const vec3 w = Frame::FromZ(n).ToWorld(SampleCosineHemisphere(uv.u, uv.v));
       out[0] = {glm::normalize(w), m.reflectance, 0.0, RayKind::Diffuse, ray.inside};
       return 1;
     }
     case MaterialType::Phong: {
       const int k = options_.branches;
       for (int i = 0; i < k; ++i) {
-        const PhongSample s = SamplePhong(m, d, n, rng.Uniform(), rng.Uniform());
+        const Sample2 uv =
+            sampler.Get2D(i == 0 ? SampleDimension::Scatter(node)
+                                 : SampleDimension::Extra(node, static_cast<std::uint32_t>(i)));
+        const PhongSample s = SamplePhong(m, d, n, uv.u, uv.v);
         out[i] = {s.direction, s.weight / static_cast<double>(k), k * s.pdf, RayKind::Reflected,
                   ray.inside};
       }
@@ -116,7 +122,7 @@ int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, Pcg32&
       const double f = GlassReflectance(glass, m.ior, options_.fresnel);
       if (options_.glass == MonteCarloOptions::Glass::Choose) {
         // One child, reflection with probability F: weight F / F = (1 - F) / (1 - F) = 1.
-        if (!refracted || rng.Uniform() < f) {
+        if (!refracted || sampler.Get1D(SampleDimension::Choice(node)) < f) {
           out[0] = {mirror, Colour(1.0), 0.0, RayKind::Reflected, ray.inside};
         } else {
           out[0] = {*refracted, Colour(1.0), 0.0, RayKind::Refracted, !ray.inside};
@@ -135,10 +141,12 @@ int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, Pcg32&
 }
 
 Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::uint32_t root,
-                                       Pcg32& rng, RenderStats& stats, PixelShaft shaft) const {
+                                       Sampler& sampler, RenderStats& stats,
+                                       PixelShaft shaft) const {
   // A reference, not a copy (copying the node cost ~10% of the render): valid until
   // AddChildren below may move the nodes; what is needed after that is read first.
   const Ray& ray = tree[index];
+  const std::uint32_t node = index - root;  // its number in the tree: its dimensions
   Hit hit;
   if (shaft.roomOnly) {
     scene_.IntersectRoom(ray.start, ray.direction, shaft.side, hit);
@@ -165,13 +173,15 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::
   if (m.type == MaterialType::Lambertian) {
     // The design's terminal walls end most paths: no child, nothing else to do.
     if (options_.walls == MonteCarloOptions::Walls::Terminal) {
-      return EndAtTerminalWall(tree[index], hit, n, rng, stats, shaft.areaLightVisible);
+      return EndAtTerminalWall(tree[index], hit, n, node, sampler, stats, shaft.areaLightVisible);
     }
-    colour += DirectLight(hit, ray.direction, n, 0.0, rng, stats, shaft.areaLightVisible);
+    colour += DirectLight(hit, ray.direction, n, 0.0, sampler.Get2D(SampleDimension::Light(node)),
+                          stats, shaft.areaLightVisible);
   } else if (m.type == MaterialType::Phong && options_.strategy != Strategy::Brdf) {
     const double misBranches =
         options_.strategy == Strategy::Mis ? static_cast<double>(options_.branches) : 0.0;
-    colour += DirectLight(hit, ray.direction, n, misBranches, rng, stats);
+    colour += DirectLight(hit, ray.direction, n, misBranches,
+                          sampler.Get2D(SampleDimension::Light(node)), stats);
   }
 
   // Read late: the node was written just before this call, and a load right after
@@ -179,10 +189,10 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::
   const Colour importance = ray.importance;
   const int depth = ray.depth;
   Candidate candidates[kMaxBranches];
-  int count = depth + 1 < options_.maxDepth ? Scatter(ray, hit, n, rng, candidates) : 0;
+  int count = depth + 1 < options_.maxDepth ? Scatter(ray, hit, n, node, sampler, candidates) : 0;
   // Russian roulette by throughput relative to the camera ray, whose importance is
-  // 1/N: survive with q = min(1, beta), then divide by q. (The root is read here, not
-  // before tracing: a load right after the store that wrote it stalls.)
+  // 1/N: survive with q = min(1, beta / kRouletteThreshold), then divide by q. (The root
+  // is read here, not before tracing: a load right after the store that wrote it stalls.)
   const double rootImportance = count > 0 ? MaxComponent(tree[root].importance) : 0.0;
   const double rootScale = rootImportance > 0.0 ? 1.0 / rootImportance : 1.0;
   int kept = 0;
@@ -190,9 +200,13 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::
     Candidate c = candidates[i];
     const double beta = MaxComponent(importance * c.weight) * rootScale;
     if (!(beta > 0.0)) continue;
-    if (beta < 1.0) {
-      if (rng.Uniform() >= beta) continue;
-      c.weight /= beta;
+    const double q = beta * (1.0 / kRouletteThreshold);
+    if (q < 1.0) {
+      const std::uint32_t dimension =
+          i == 0 ? SampleDimension::Roulette(node)
+                 : SampleDimension::Extra(node, static_cast<std::uint32_t>(i)) + 2;
+      if (sampler.Get1D(dimension) >= q) continue;
+      c.weight /= q;
     }
     candidates[kept++] = c;
   }
@@ -223,7 +237,7 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::
   }
   for (int i = 0; i < kept; ++i) {
     const std::uint32_t ci = first + static_cast<std::uint32_t>(i);
-    const Colour c = TraceNode(tree, ci, root, rng, stats);
+    const Colour c = TraceNode(tree, ci, root, sampler, stats);
     colour += tree[ci].weight * c;  // C_R = L_local + sum W_i C_i
   }
   tree[index].final = kept == 0;

@@ -5,7 +5,7 @@
 namespace glint {
 
 PixelPass Pixel::TracePass(const Camera& camera, int x, int y, int rays,
-                           const Integrator& integrator, Pcg32& rng, RayTree& trees,
+                           const Integrator& integrator, Sampler& sampler, RayTree& trees,
                            RenderStats& stats, bool keepTrees,
                            const std::atomic<bool>* cancel) const {
   const double importance = 1.0 / rays;  // all rays of a pixel weigh the same
@@ -17,8 +17,10 @@ PixelPass Pixel::TracePass(const Camera& camera, int x, int y, int rays,
       break;
     }
     if (!keepTrees) trees.Clear();
-    const double px = x + rng.Uniform();  // a random point inside the pixel
-    const double py = y + rng.Uniform();
+    sampler.StartSample(i);
+    const Sample2 p = sampler.Get2D(SampleDimension::kPixel);  // a point inside the pixel
+    const double px = x + p.u;
+    const double py = y + p.v;
     Ray ray;
     ray.start = camera.Eye();
     ray.direction = camera.DirectionThrough(px, py);
@@ -27,7 +29,7 @@ PixelPass Pixel::TracePass(const Camera& camera, int x, int y, int rays,
     ray.kind = RayKind::Camera;
     const std::uint32_t root = trees.Add(ray);
     ++stats.cameraRays;
-    const Colour c = integrator.Trace(trees, root, shaft_, rng, stats);
+    const Colour c = integrator.Trace(trees, root, shaft_, sampler, stats);
     if (!IsFinite(c)) {  // counted and dropped, never averaged in
       ++stats.nonFiniteSamples;
       continue;

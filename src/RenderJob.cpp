@@ -140,6 +140,10 @@ RenderSetup Prepare(const RenderArgs& args, bool checkOutputs) {
   return s;
 }
 
+SamplerKind SamplerFromArgs(const RenderArgs& args) {
+  return ParseSamplerKind(args.sampler).value_or(SamplerKind::Sobol);
+}
+
 namespace {
 MonteCarloOptions McOptions(const RenderArgs& args, const ModeSettings& mode) {
   using O = MonteCarloOptions;
@@ -188,7 +192,8 @@ nlohmann::json RenderIdentity(const RenderArgs& args, const RenderSetup& s) {
                       {"--mode", args.mode},
                       {"--spp", s.raysPerPass},
                       {"--time", args.timeBudget},
-                      {"--fresnel", args.fresnel}};
+                      {"--fresnel", args.fresnel},
+                      {"--sampler", args.sampler}};
   if (args.mode == "mc") {
     j["--walls"] = args.walls;
     j["--glass"] = args.glass;
@@ -250,6 +255,7 @@ RenderResult RunPasses(Camera& camera, const Integrator& integrator, const Rende
   RenderResult r;
   RenderOptions options;
   options.seed = args.seed;
+  options.sampler = SamplerFromArgs(args);
   options.threads = s.threads;
   options.cancel = &interrupted;
   std::string label;
@@ -300,6 +306,7 @@ RenderResult RunPasses(Camera& camera, const Integrator& integrator, const Rende
   while (rays > 0) {
     options.raysPerPixel = rays;
     options.pass = r.passes;
+    options.firstSample = r.spp;
     label = progressive ? "pass " + std::to_string(r.passes + 1) : "";
     const double before = elapsed();
     passStats = RenderStats{};
@@ -341,17 +348,20 @@ std::string StatsJson(const RenderArgs& args, const RenderSetup& s, const Camera
   j["seed"] = args.seed;
   j["seconds"] = r.seconds;
   if (args.timeBudget > 0.0) j["time_budget"] = args.timeBudget;
-  j["rays"] = {{"camera", st.cameraRays},       {"reflected", st.reflectedRays},
-               {"refracted", st.refractedRays}, {"diffuse", st.diffuseRays},
-               {"shadow", st.shadowRays},       {"total", st.TotalRays()}};
+  // Rays traced through the scene, by kind; the shadow tests a pixel's shaft answered were
+  // not traced and are counted apart.
+  j["rays"] = {{"camera", st.cameraRays},         {"reflected", st.reflectedRays},
+               {"refracted", st.refractedRays},   {"diffuse", st.diffuseRays},
+               {"shadow", st.ShadowRaysTraced()}, {"traced", st.TracedRays()}};
+  j["visibility_answered_without_a_ray"] = st.shadowRaysByShaft;
   const double seconds = r.seconds > 0.0 ? r.seconds : 1e-9;
-  j["mrays_per_second"] = static_cast<double>(st.TotalRays()) / seconds / 1e6;
+  j["mrays_per_second"] = static_cast<double>(st.TracedRays()) / seconds / 1e6;
   j["camera_paths_per_second"] = static_cast<double>(st.cameraRays) / seconds;
   j["nonfinite_samples"] = st.nonFiniteSamples;
-  j["shadow_rays_answered_by_shaft"] = st.shadowRaysByShaft;
   j["interrupted"] = r.interrupted;
   j["peak_rss_mib"] = PeakResidentMiB();
   j["fresnel"] = args.fresnel;
+  j["sampler"] = args.sampler;
   if (args.mode == "mc") {
     j["mc"] = {{"walls", args.walls},
                {"glass", args.glass},
@@ -367,18 +377,19 @@ void PrintSummary(const RenderArgs& args, const RenderSetup& s, const RenderResu
   const RenderStats& st = r.stats;
   const int size = args.cluster ? args.cluster->Size() : 1;
   const std::string ranks = size > 1 ? std::to_string(size) + " ranks x " : "";
-  const double total = static_cast<double>(st.TotalRays());
+  const double traced = static_cast<double>(st.TracedRays());
   const auto spp = static_cast<unsigned long long>(r.spp);
   std::fprintf(stderr,
                "glint: %s %dx%d, %llu rays/pixel (%u pass%s), %s%d thread%s: %.3f s, %.3g rays "
-               "(camera %.3g, reflected %.3g, refracted %.3g, diffuse %.3g, shadow %.3g), "
-               "%.2f Mrays/s",
+               "traced (camera %.3g, reflected %.3g, refracted %.3g, diffuse %.3g, shadow "
+               "%.3g), %.2f Mrays/s; %.3g shadow tests answered by the pixel shafts without a ray",
                args.mode.c_str(), s.width, s.height, spp, r.passes, r.passes == 1 ? "" : "es",
-               ranks.c_str(), s.threads, s.threads == 1 ? "" : "s", r.seconds, total,
+               ranks.c_str(), s.threads, s.threads == 1 ? "" : "s", r.seconds, traced,
                static_cast<double>(st.cameraRays), static_cast<double>(st.reflectedRays),
                static_cast<double>(st.refractedRays), static_cast<double>(st.diffuseRays),
-               static_cast<double>(st.shadowRays),
-               total / (r.seconds > 0.0 ? r.seconds : 1e-9) / 1e6);
+               static_cast<double>(st.ShadowRaysTraced()),
+               traced / (r.seconds > 0.0 ? r.seconds : 1e-9) / 1e6,
+               static_cast<double>(st.shadowRaysByShaft));
   if (st.nonFiniteSamples > 0) {
     std::fprintf(stderr, ", %llu NaN/Inf samples dropped",
                  static_cast<unsigned long long>(st.nonFiniteSamples));

@@ -32,6 +32,7 @@ struct RenderArgs {
   std::string fresnel = "exact";
   std::string strategy = "mis";
   int branches = 1;
+  std::string sampler = "sobol";  // the equal-time study's winner (BENCHMARKS.md)
   // The Monte Carlo switches given on the command line (--walls, ...): with --mode
   // whitted they mean nothing, and Prepare refuses them.
   std::vector<std::string> monteCarloSwitches;
@@ -47,6 +48,9 @@ struct RenderArgs {
 // The switches that mean something in Monte Carlo mode only.
 inline constexpr const char* kMonteCarloSwitches[] = {"--walls", "--branches", "--glass",
                                                       "--strategy"};
+
+// The --sampler of the command line (checked by the parser).
+SamplerKind SamplerFromArgs(const RenderArgs& args);
 
 // Everything a render needs, checked before any time is spent rendering.
 struct RenderSetup {

@@ -88,14 +88,15 @@ int RunTree(const TreeArgs& a) {
   CheckWritable(a.output);
   const Camera camera(s.scene.wall, s.scene.camera.eye, s.width, s.height);
   const std::unique_ptr<Integrator> integrator = MakeIntegrator(args, s);
-  // The same random stream as pixel (x, y) of the first pass of `glint render`.
+  // The same random numbers as pixel (x, y) of the first pass of `glint render`.
   const auto index = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(s.width) +
                      static_cast<std::uint64_t>(x);
-  Pcg32 rng = Pcg32::ForPixel(args.seed, index, 0);
+  const int rays = args.spp > 0 ? args.spp : 1;
+  Sampler sampler(SamplerFromArgs(args), args.seed, index, 0, 0, rays);
   RayTree trees;
   RenderStats stats;
   Pixel pixel;
-  pixel.Render(camera, x, y, args.spp > 0 ? args.spp : 1, *integrator, rng, trees, stats,
+  pixel.Render(camera, x, y, rays, *integrator, sampler, trees, stats,
                /*keepTrees=*/true);
   WriteFileAtomically(a.output, Dot(trees, s.scene, x, y, a.maxNodes));
   const Colour c = pixel.Radiance();

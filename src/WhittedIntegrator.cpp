@@ -9,7 +9,7 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth, FresnelMo
     : scene_(scene), maxDepth_(maxDepth), fresnel_(fresnel) {}
 
 Colour WhittedIntegrator::Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,
-                                Pcg32& /*rng*/, RenderStats& stats) const {
+                                Sampler& /*sampler*/, RenderStats& stats) const {
   return TraceNode(tree, root, stats, shaft);
 }
 

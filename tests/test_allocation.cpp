@@ -38,15 +38,15 @@ long AllocationsWhileRendering(const Integrator& integrator, const Camera& camer
   // Warm up: the tree grows to what these pixels need.
   for (int y = 0; y < 16; ++y) {
     for (int x = 0; x < 16; ++x) {
-      Pcg32 rng = Pcg32::ForPixel(1, static_cast<std::uint64_t>(y * 16 + x));
-      pixel.Render(camera, x * 2, y * 2, spp, integrator, rng, trees, stats);
+      Sampler sampler(Pcg32::ForPixel(1, static_cast<std::uint64_t>(y * 16 + x)));
+      pixel.Render(camera, x * 2, y * 2, spp, integrator, sampler, trees, stats);
     }
   }
   const long before = gAllocations.load();
   for (int y = 0; y < 16; ++y) {
     for (int x = 0; x < 16; ++x) {
-      Pcg32 rng = Pcg32::ForPixel(1, static_cast<std::uint64_t>(y * 16 + x));
-      pixel.Render(camera, x * 2, y * 2, spp, integrator, rng, trees, stats);
+      Sampler sampler(Pcg32::ForPixel(1, static_cast<std::uint64_t>(y * 16 + x)));
+      pixel.Render(camera, x * 2, y * 2, spp, integrator, sampler, trees, stats);
     }
   }
   return gAllocations.load() - before;

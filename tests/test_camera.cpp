@@ -74,7 +74,7 @@ Image ExpectSameForOneAndTwoThreads(const Scene& scene, const Integrator& integr
   for (std::size_t i = 0; i < a.Pixels().size(); ++i) {
     EXPECT_EQ(a.Pixels()[i], b.Pixels()[i]) << "pixel " << i;
   }
-  EXPECT_EQ(s1.TotalRays(), s2.TotalRays());
+  EXPECT_EQ(s1.TracedRays(), s2.TracedRays());
   EXPECT_EQ(s1.shadowRays, s2.shadowRays);
   EXPECT_EQ(s1.cameraRays, static_cast<std::uint64_t>(width) * height * spp);
   return a;

@@ -25,7 +25,7 @@ MeanAndError EstimateRadiance(const MonteCarloIntegrator& integrator, vec3 start
                               int channel, std::uint64_t seed) {
   RayTree tree;
   RenderStats stats;
-  Pcg32 rng(seed, 9);
+  Sampler sampler(Pcg32(seed, 9));
   MeanAndError m;
   for (int i = 0; i < n; ++i) {
     tree.Clear();
@@ -33,7 +33,7 @@ MeanAndError EstimateRadiance(const MonteCarloIntegrator& integrator, vec3 start
     ray.start = start;
     ray.direction = glm::normalize(d);
     const std::uint32_t root = tree.Add(ray);
-    m.Add(integrator.Trace(tree, root, PixelShaft{}, rng, stats)[channel]);
+    m.Add(integrator.Trace(tree, root, PixelShaft{}, sampler, stats)[channel]);
   }
   return m;
 }

@@ -54,13 +54,15 @@ void CompareWithReference(const Image& image, const std::string& name, double me
                   << "; wrote " << BinaryPath(name + "-diff.pfm");
 }
 
-// Renders the canonical scene at size x size with seed 1; no sample may be NaN or Inf.
+// Renders the canonical scene at size x size with seed 1 and the command line's default
+// sampler (sobol); no sample may be NaN or Inf.
 Image RenderCanonical(const Scene& scene, const Integrator& integrator, int size, int spp) {
   Camera camera(scene.wall, scene.camera.eye, size, size);
   camera.PrepareShafts(scene, integrator.ShadowLights());  // as the renderer does
   RenderOptions options;
   options.raysPerPixel = spp;
   options.seed = 1;
+  options.sampler = SamplerKind::Sobol;
   const RenderStats stats = camera.Render(integrator, options);
   EXPECT_EQ(stats.nonFiniteSamples, 0u);
   return camera.ToImage();

@@ -241,9 +241,9 @@ TEST(PixelShaft, RayTreesAreTheSameWithAndWithout) {
         for (int withShaft = 0; withShaft < 2; ++withShaft) {
           Pixel pixel;
           if (withShaft == 1) pixel.SetShaft(camera.PixelAt(x, y).Shaft());
-          Pcg32 rng = Pcg32::ForPixel(7, static_cast<std::uint64_t>(y * kSize + x));
+          Sampler sampler(Pcg32::ForPixel(7, static_cast<std::uint64_t>(y * kSize + x)));
           RenderStats stats;
-          pixel.Render(camera, x, y, 4, *integrator, rng, trees[withShaft], stats, true);
+          pixel.Render(camera, x, y, 4, *integrator, sampler, trees[withShaft], stats, true);
         }
         roomOnly += camera.PixelAt(x, y).Shaft().roomOnly ? 1 : 0;
         ASSERT_EQ(trees[0].Size(), trees[1].Size()) << "pixel " << x << "," << y;

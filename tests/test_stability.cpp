@@ -35,7 +35,10 @@ Colour TraceOnce(const Integrator& integrator, vec3 start, vec3 d, Pcg32& rng, R
   Ray ray;
   ray.start = start;
   ray.direction = glm::normalize(d);
-  return integrator.Trace(tree, tree.Add(ray), PixelShaft{}, rng, stats);
+  Sampler sampler(rng);
+  const Colour c = integrator.Trace(tree, tree.Add(ray), PixelShaft{}, sampler, stats);
+  rng = sampler.Generator();  // the test's stream goes on where the trace left it
+  return c;
 }
 
 TEST(Stability, GlassOfIndexOneLeavesTheWhittedImageUnchanged) {
@@ -231,7 +234,9 @@ void CheckRaysInside(const Scene& scene, const std::string& name, vec3 centre, d
     ray.start = start;
     ray.direction = d;
     ray.inside = true;
-    const Colour c = integrator.Trace(tree, tree.Add(ray), PixelShaft{}, rng, stats);
+    Sampler sampler(rng);
+    const Colour c = integrator.Trace(tree, tree.Add(ray), PixelShaft{}, sampler, stats);
+    rng = sampler.Generator();
     ASSERT_TRUE(IsFinite(c));
     const Ray& root = tree[0];
     double weights = 0.0;

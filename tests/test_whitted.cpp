@@ -16,9 +16,9 @@ RayTree TraceOne(const Integrator& integrator, vec3 start, vec3 d, Colour* colou
   ray.start = start;
   ray.direction = glm::normalize(d);
   const std::uint32_t root = tree.Add(ray);
-  Pcg32 rng(1, 1);
+  Sampler sampler(Pcg32(1, 1));
   RenderStats stats;
-  const Colour c = integrator.Trace(tree, root, PixelShaft{}, rng, stats);
+  const Colour c = integrator.Trace(tree, root, PixelShaft{}, sampler, stats);
   if (colour) *colour = c;
   return tree;
 }

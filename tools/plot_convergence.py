@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
-"""Draws a convergence CSV of `glint converge` as a log-log chart of RMSE against time,
-with the 1/sqrt(t) slope for comparison, and prints each variant's fitted slope."""
+"""Draws a convergence CSV of `glint converge` as two log-log charts against time: RMSE
+(with the 1/sqrt(t) slope) and relative MSE, the mean of (a - r)^2 / (r^2 + 0.01) (with the
+1/t slope), and prints each variant's fitted slopes. Relative MSE is the measure to compare
+by: plain RMSE of an HDR image is dominated by the few pixels on the light's edge."""
 import csv
 import sys
 
@@ -11,13 +13,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 
-def main(csv_path, png_path, metric="rmse"):
-    rows = list(csv.DictReader(open(csv_path)))
-    variants = []
-    for r in rows:
-        if r["variant"] not in variants:
-            variants.append(r["variant"])
-    fig, ax = plt.subplots(figsize=(6.4, 4.8), dpi=100)
+def panel(ax, rows, variants, metric, label, power):
     anchor = None
     for name in variants:
         t = np.array([float(r["seconds"]) for r in rows if r["variant"] == name])
@@ -33,17 +29,28 @@ def main(csv_path, png_path, metric="rmse"):
         t0, e0 = anchor
         times = np.array([float(r["seconds"]) for r in rows if float(r["seconds"]) > 0])
         ts = np.array([times.min(), times.max()])
-        ax.loglog(ts, e0 * np.sqrt(t0 / ts), "k--", label="1/sqrt(t)")
+        ax.loglog(ts, e0 * (t0 / ts) ** power, "k--", label=f"1/t^{power:g}")
     ax.set_xlabel("render time (s)")
-    ax.set_ylabel(metric.upper() + " against the reference")
-    ax.set_title("glint: error against time")
+    ax.set_ylabel(label + " against the reference")
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend()
+    ax.legend(fontsize=8)
+
+
+def main(csv_path, png_path):
+    rows = list(csv.DictReader(open(csv_path)))
+    variants = []
+    for r in rows:
+        if r["variant"] not in variants:
+            variants.append(r["variant"])
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.6), dpi=100)
+    panel(axes[0], rows, variants, "rel_mse", "relative MSE", 1.0)
+    panel(axes[1], rows, variants, "rmse", "RMSE", 0.5)
+    fig.suptitle("glint: error against time")
     fig.tight_layout()
     fig.savefig(png_path)
 
 
 if __name__ == "__main__":
-    if len(sys.argv) < 3:
-        sys.exit("usage: plot_convergence.py CSV PNG [metric]")
+    if len(sys.argv) != 3:
+        sys.exit("usage: plot_convergence.py CSV PNG")
     main(*sys.argv[1:])

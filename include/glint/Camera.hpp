@@ -24,6 +24,10 @@ struct RenderOptions {
   int raysPerPixel = 1;  // in this pass
   std::uint64_t seed = 1;
   std::uint32_t pass = 0;  // passes draw independent random numbers
+  SamplerKind sampler = SamplerKind::Random;
+  // The pixels' sample number of this pass's first ray: the rays of the passes before it
+  // (a sobol sequence goes on from there).
+  std::uint64_t firstSample = 0;
   // Checked between pixels; when it turns true the pass stops early, leaving the
   // remaining pixels as they were (for SIGINT and SIGTERM).
   const std::atomic<bool>* cancel = nullptr;

@@ -8,7 +8,7 @@
 #include "glint/PixelShaft.hpp"
 #include "glint/RayTree.hpp"
 #include "glint/RenderStats.hpp"
-#include "glint/Rng.hpp"
+#include "glint/Sampler.hpp"
 
 namespace glint {
 
@@ -21,8 +21,9 @@ class Integrator {
 
   // Traces tree[root] (start, direction, importance set) and fills in its colour and
   // its subtree. Returns the colour. `shaft` is what the pixel that shot the camera ray
-  // knows in advance (PixelShaft{} for any other ray: nothing).
-  virtual Colour Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft, Pcg32& rng,
+  // knows in advance (PixelShaft{} for any other ray: nothing). Its random decisions
+  // take their numbers from `sampler`, in the sample the pixel has started.
+  virtual Colour Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft, Sampler& sampler,
                        RenderStats& stats) const = 0;
 
   // The shadow rays it casts, for Camera::PrepareShafts.

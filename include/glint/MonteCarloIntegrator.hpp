@@ -29,30 +29,35 @@ struct MonteCarloOptions {
 class MonteCarloIntegrator final : public Integrator {
  public:
   static constexpr int kMaxBranches = 64;
+  // Russian roulette leaves paths whose throughput is at least this alone, and lets one
+  // below it live with probability throughput / threshold. With 1 (every path rouletted
+  // by its throughput) the glass sphere's light paths were most of the image's error: a
+  // refraction out of the rim after internal reflections carries 1 - F << 1 toward the
+  // light and was killed, or multiplied up, at random (see BENCHMARKS.md, "samplers").
+  static constexpr double kRouletteThreshold = 0.25;
 
   // Throws std::invalid_argument if the scene has no area light.
   MonteCarloIntegrator(const Scene& scene, MonteCarloOptions options);
 
-  Colour Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft, Pcg32& rng,
+  Colour Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft, Sampler& sampler,
                RenderStats& stats) const override;
   PixelShaft::Lights ShadowLights() const override { return PixelShaft::Lights::Area; }
 
-  // Direct light at a surface point from one random point on the light:
-  // Le f cos(theta) / p(w), with f the BRDF for the incident direction d.
+  // Direct light at a surface point from one random point on the light (the sample's
+  // numbers of dimension `dimension`): Le f cos(theta) / p(w), with f the BRDF for the
+  // incident direction d.
   // `unoccluded`: the hit is known to see all of the light (PixelShaft::areaLightVisible),
   // so the shadow ray needs no test.
   // Defined in this header with the Lambertian case every wall hit takes and with
   // ShadowBlocked, so that the compiler has the walls' whole estimator in one piece: as
   // separate calls they passed their vectors through the stack, even for shadow rays
   // the shaft had answered (measured: 3%). The Phong case is a call.
-  Colour DirectLight(const Hit& hit, vec3 d, vec3 n, double misBranches, Pcg32& rng,
+  Colour DirectLight(const Hit& hit, vec3 d, vec3 n, double misBranches, Sample2 uv,
                      RenderStats& stats, bool unoccluded = false) const {
-    const double u = rng.Uniform();
-    const double v = rng.Uniform();
     if (hit.material->type == MaterialType::Lambertian) {
-      return DirectLightLambertian(hit, n, u, v, stats, unoccluded);
+      return DirectLightLambertian(hit, n, uv.u, uv.v, stats, unoccluded);
     }
-    return DirectLightPhong(hit, d, n, misBranches, u, v, stats, unoccluded);
+    return DirectLightPhong(hit, d, n, misBranches, uv.u, uv.v, stats, unoccluded);
   }
 
   const MonteCarloOptions& Options() const { return options_; }
@@ -87,17 +92,20 @@ class MonteCarloIntegrator final : public Integrator {
 
   // The end of a ray that hit a terminal wall (`hit`, normal n facing the ray): its colour
   // is the wall's direct light, it spawns no child. Sets the node's colour and final flag.
-  Colour EndAtTerminalWall(Ray& ray, const Hit& hit, vec3 n, Pcg32& rng, RenderStats& stats,
-                           bool unoccluded) const;
+  // `node`: the ray's node number in its tree (SampleDimension).
+  Colour EndAtTerminalWall(Ray& ray, const Hit& hit, vec3 n, std::uint32_t node, Sampler& sampler,
+                           RenderStats& stats, bool unoccluded) const;
 
   // `shaft`: what is known in advance of this ray (the camera ray's pixel), or nothing.
-  Colour TraceNode(RayTree& tree, std::uint32_t index, std::uint32_t root, Pcg32& rng,
+  Colour TraceNode(RayTree& tree, std::uint32_t index, std::uint32_t root, Sampler& sampler,
                    RenderStats& stats, PixelShaft shaft = {}) const;
   // How much of the light's emission a ray that hit it counts: 1, an MIS weight, or 0
   // where next-event estimation has counted it already.
   double EmissionWeight(const Ray& ray, vec3 lightPoint) const;
-  // Candidate children of a hit (before Russian roulette); returns their number.
-  int Scatter(const Ray& ray, const Hit& hit, vec3 n, Pcg32& rng, Candidate* out) const;
+  // Candidate children of a hit of node `node` (before Russian roulette); returns their
+  // number.
+  int Scatter(const Ray& ray, const Hit& hit, vec3 n, std::uint32_t node, Sampler& sampler,
+              Candidate* out) const;
 
   const Scene& scene_;
   const Light& light_;

@@ -1,4 +1,4 @@
-// One pixel of the Camera: it shoots its rays through random points inside itself,
+// One pixel of the Camera: it shoots its rays through points inside itself (its sampler's),
 // has the integrator grow their ray trees, and keeps their equally weighted mean
 // (a box filter; each first ray has importance 1/N). A progressive render adds passes;
 // the pixel's radiance is the mean of all its finite samples.
@@ -12,7 +12,7 @@
 #include "glint/PixelShaft.hpp"
 #include "glint/RayTree.hpp"
 #include "glint/RenderStats.hpp"
-#include "glint/Rng.hpp"
+#include "glint/Sampler.hpp"
 
 namespace glint {
 
@@ -34,7 +34,7 @@ class Pixel {
   // memory does not grow with N. A NaN or Inf sample is counted and dropped.
   // If `cancel` turns true the pass ends early with the rays traced so far.
   PixelPass TracePass(const Camera& camera, int x, int y, int rays, const Integrator& integrator,
-                      Pcg32& rng, RayTree& trees, RenderStats& stats, bool keepTrees = false,
+                      Sampler& sampler, RayTree& trees, RenderStats& stats, bool keepTrees = false,
                       const std::atomic<bool>* cancel = nullptr) const;
   // Adds a pass: its sum to the pixel's, in pass order (so that a pass traced elsewhere,
   // another thread or another process, gives the same bits). A complete pass counts.
@@ -45,9 +45,9 @@ class Pixel {
   }
   // TracePass, then Add.
   void Render(const Camera& camera, int x, int y, int rays, const Integrator& integrator,
-              Pcg32& rng, RayTree& trees, RenderStats& stats, bool keepTrees = false,
+              Sampler& sampler, RayTree& trees, RenderStats& stats, bool keepTrees = false,
               const std::atomic<bool>* cancel = nullptr) {
-    Add(TracePass(camera, x, y, rays, integrator, rng, trees, stats, keepTrees, cancel));
+    Add(TracePass(camera, x, y, rays, integrator, sampler, trees, stats, keepTrees, cancel));
   }
 
   // What the pixel knows of its rays in advance (Camera::PrepareShafts); nothing until then.

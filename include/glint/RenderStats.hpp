@@ -11,7 +11,7 @@ struct RenderStats {
   std::uint64_t reflectedRays = 0;
   std::uint64_t refractedRays = 0;
   std::uint64_t diffuseRays = 0;
-  std::uint64_t shadowRays = 0;
+  std::uint64_t shadowRays = 0;        // shadow tests: traced, or answered by the shaft
   std::uint64_t nonFiniteSamples = 0;  // NaN or Inf samples, dropped before averaging
   // Of shadowRays, those whose answer (unblocked) the pixel's shaft knew in advance.
   std::uint64_t shadowRaysByShaft = 0;
@@ -34,8 +34,11 @@ struct RenderStats {
     return s;
   }
 
-  std::uint64_t TotalRays() const {
-    return cameraRays + reflectedRays + refractedRays + diffuseRays + shadowRays;
+  // Rays traced through the scene: a shadow ray the shaft answered was not traced, and
+  // throughput counts only these.
+  std::uint64_t ShadowRaysTraced() const { return shadowRays - shadowRaysByShaft; }
+  std::uint64_t TracedRays() const {
+    return cameraRays + reflectedRays + refractedRays + diffuseRays + ShadowRaysTraced();
   }
   RenderStats& operator+=(const RenderStats& o) {
     cameraRays += o.cameraRays;

@@ -16,7 +16,7 @@ class WhittedIntegrator final : public Integrator {
   // approximation (the normal-incidence reflectance at every angle).
   WhittedIntegrator(const Scene& scene, int maxDepth, FresnelModel fresnel = FresnelModel::Exact);
 
-  Colour Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft, Pcg32& rng,
+  Colour Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft, Sampler& sampler,
                RenderStats& stats) const override;
   PixelShaft::Lights ShadowLights() const override { return PixelShaft::Lights::Point; }
 

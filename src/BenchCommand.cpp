@@ -20,9 +20,8 @@ struct Row {
   RenderStats stats;
 };
 
-// The best of `repeat` timed renders of one pass (the camera is warmed up first, so
-// that the per-thread arenas exist before the clock starts).
-Row Measure(const BenchArgs& args, const std::string& mode, int threads) {
+// The render a row measures: the bench's scene, size and sampler in one mode.
+RenderArgs RowArgs(const BenchArgs& args, const std::string& mode, int threads) {
   RenderArgs r;
   r.scene = args.scene;
   r.mode = mode;
@@ -30,6 +29,13 @@ Row Measure(const BenchArgs& args, const std::string& mode, int threads) {
   r.threads = threads;
   r.spp = mode == "mc" ? args.mcSpp : args.whittedSpp;
   r.sampler = args.sampler;
+  return r;
+}
+
+// The best of `repeat` timed renders of one pass (the camera is warmed up first, so
+// that the per-thread arenas exist before the clock starts).
+Row Measure(const BenchArgs& args, const std::string& mode, int threads) {
+  const RenderArgs r = RowArgs(args, mode, threads);
   const RenderSetup s = Prepare(r, false);
   Camera camera(s.scene.wall, s.scene.camera.eye, s.width, s.height);
   const std::unique_ptr<Integrator> integrator = MakeIntegrator(r, s);
@@ -89,13 +95,7 @@ int RunBenchRanks(const BenchArgs& args, const Cluster& cluster) {
   for (const std::string& mode : args.modes) {
     Row one;
     if (cluster.Root()) one = Measure(args, mode, 1);
-    RenderArgs r;
-    r.scene = args.scene;
-    r.mode = mode;
-    r.size = args.size;
-    r.threads = 1;
-    r.spp = mode == "mc" ? args.mcSpp : args.whittedSpp;
-    r.sampler = args.sampler;
+    const RenderArgs r = RowArgs(args, mode, 1);
     const RenderSetup s = Prepare(r, false);
     Camera camera(s.scene.wall, s.scene.camera.eye, s.width, s.height);
     const std::unique_ptr<Integrator> integrator = MakeIntegrator(r, s);

@@ -6,8 +6,9 @@
 //   sobol       an Owen-scrambled Sobol sequence per pixel (Burley 2020): dimensions in
 //               groups of four, each group the first four Sobol dimensions with its own
 //               scramble and its own shuffle of the sample index ("shuffled padding", so
-//               that groups are uncorrelated), every pixel its own seeds. A progressive
-//               render's passes continue one sequence (Sampler's firstSample).
+//               that groups are uncorrelated), every pixel its own seeds; beyond the first
+//               groups, independent uniforms (kCachedGroups). A progressive render's
+//               passes continue one sequence (Sampler's firstSample).
 #pragma once
 
 #include <array>
@@ -59,10 +60,11 @@ class Sampler {
         passSeed_(MixBits(pixelSeed_, pass)),
         firstSample_(firstSample),
         samples_(samplesInPass > 0 ? static_cast<std::uint32_t>(samplesInPass) : 1U) {
-    // Strata of the pass: columns x rows = samples, columns the largest divisor <= sqrt.
-    columns_ = 1;
-    for (std::uint32_t c = 1; c * c <= samples_; ++c) {
-      if (samples_ % c == 0) columns_ = c;
+    if (kind_ == SamplerKind::Stratified) {
+      // Strata of the pass: columns x rows = samples, columns the largest divisor <= sqrt.
+      for (std::uint32_t c = 1; c * c <= samples_; ++c) {
+        if (samples_ % c == 0) columns_ = c;
+      }
     }
     if (kind_ == SamplerKind::Sobol) {
       for (std::uint32_t g = 0; g < kCachedGroups; ++g) cached_[g] = MakeGroupSeeds(g);
@@ -134,10 +136,10 @@ class Sampler {
   // Sobol's groups cover the pixel and the first two nodes of a path (SampleDimension),
   // their seeds made once a pixel and pass, the first group's point once a sample.
   // Deeper decisions take independent uniforms from a stream of the sample's own
-  // (uncorrelated, like shuffled Sobol groups). Sobol for every node made diffuse-wall
-  // renders 18% slower than random at equal error per ray; with four groups, 6% (7.3 s
-  // budgets, the same minutes: 189-196 against 205-206 rays per pixel, relative MSE
-  // 0.034 for both), while terminal walls keep Sobol's lead (BENCHMARKS.md).
+  // (uncorrelated, like shuffled Sobol groups). With diffuse walls, Sobol groups for every
+  // node traced 22% fewer rays/s than random (bench/equal-time), for the first five nodes
+  // 18% fewer rays per pixel in a 7.3 s budget, for the first two 6% (189-196 against
+  // 205-206, relative MSE 0.034 for both), while terminal walls keep Sobol's lead.
   static constexpr std::uint32_t kCachedGroups = 4;
   static constexpr std::uint32_t kSobolDimensions = 4 * kCachedGroups;
 

@@ -20,6 +20,7 @@
 #include "Interrupt.hpp"
 #include "RenderJob.hpp"
 #include "TreeCommand.hpp"
+#include "ViewCommand.hpp"
 #include "glint/Camera.hpp"
 #include "glint/ImageIO.hpp"
 #include "glint/MonteCarloIntegrator.hpp"
@@ -282,6 +283,28 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
       ->capture_default_str();
   benchCommand->add_option("--json", bench.json, "Also write the table as JSON to this file");
 
+  ViewArgs view;
+  CLI::App* viewCommand = app.add_subcommand(
+      "view",
+      "Watch the render refine in the browser: a local web page with the image, its "
+      "exposure, the modes' switches, sliders for scene values, a pixel's ray trees, the "
+      "error against a reference and downloads; until SIGINT or SIGTERM");
+  viewCommand->footer(
+      "Exit codes: 0 stopped by SIGINT or SIGTERM; 1 bad input (scene file, --set or option "
+      "value) or an address and port that cannot be had.");
+  AddRenderOptions(viewCommand, view.render, false);
+  viewCommand
+      ->add_option("--host", view.host,
+                   "Address to listen on; the default is loopback only (this machine). "
+                   "0.0.0.0 lets the whole network in")
+      ->capture_default_str();
+  viewCommand->add_option("--port", view.port, "TCP port; 0 for any free one (printed)")
+      ->check(CLI::Range(0, 65535))
+      ->capture_default_str();
+  viewCommand->add_option("--reference", view.reference,
+                          "Reference image (PFM or EXR) of the same size: A/B flip, a "
+                          "relative-error view and a chart of relative MSE against time");
+
   CompareArgs compare;
   CLI::App* compareCommand = app.add_subcommand(
       "compare",
@@ -349,6 +372,11 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
   args.cluster = &cluster;
   RecordMonteCarloSwitches(conv, converge.render);
   RecordMonteCarloSwitches(treeCommand, tree.render);
+  RecordMonteCarloSwitches(viewCommand, view.render);
+  if (*viewCommand && viewCommand->count("--quiet") > 0) {
+    std::fprintf(stderr, "glint: --quiet: means nothing with glint view (it prints one line)\n");
+    return kExitBadInput;
+  }
   // One voice: under MPI only rank 0 reports.
   const auto report = [&](const char* prefix, const char* what) {
     if (cluster.Root()) std::fprintf(stderr, "glint: %s%s\n", prefix, what);
@@ -359,6 +387,7 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
     if (*treeCommand) return RunTree(tree);
     if (*benchCommand) return RunBench(bench, cluster);
     if (*compareCommand) return RunCompare(compare);
+    if (*viewCommand) return RunView(view);
   } catch (const InputError& e) {
     report("", e.what());
     return kExitBadInput;

@@ -42,14 +42,12 @@ ImageError CompareImages(const Image& image, const Image& reference, int block) 
   for (int y = 0; y < image.Height(); ++y) {
     for (int x = 0; x < image.Width(); ++x) {
       const Colour d = image.At(x, y) - reference.At(x, y);
-      const Colour r = reference.At(x, y);
       e.rmse += glm::dot(d, d);
-      e.relativeMse += glm::dot(d * d, Colour(1.0) / (r * r + Colour(0.01)));
       e.bias += d;
     }
   }
   e.rmse = std::sqrt(e.rmse / count);
-  e.relativeMse /= count;
+  e.relativeMse = RelativeMse(image, reference);
   e.bias /= count / 3.0;
   const int nx = image.Width() / block;
   const int ny = image.Height() / block;
@@ -69,6 +67,18 @@ ImageError CompareImages(const Image& image, const Image& reference, int block) 
   e.blockRmse = nx * ny > 0 ? std::sqrt(blockSum / (3.0 * nx * ny)) : 0.0;
   e.fireflyRatio = FireflyRatio(image, reference);
   return e;
+}
+
+double RelativeMse(const Image& image, const Image& reference) {
+  double sum = 0.0;
+  for (int y = 0; y < image.Height(); ++y) {
+    for (int x = 0; x < image.Width(); ++x) {
+      const Colour d = image.At(x, y) - reference.At(x, y);
+      const Colour r = reference.At(x, y);
+      sum += glm::dot(d * d, Colour(1.0) / (r * r + Colour(0.01)));
+    }
+  }
+  return sum / (3.0 * image.Width() * image.Height());
 }
 
 }  // namespace glint

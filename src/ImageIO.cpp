@@ -112,21 +112,22 @@ void WriteFileAtomically(const std::string& path, const std::string& bytes) {
   }
 }
 
-void WriteImage(const Image& image, const std::string& path, double exposure) {
-  switch (FormatFromPath(path)) {
+std::string EncodeImage(const Image& image, ImageFormat format, double exposure) {
+  switch (format) {
     case ImageFormat::Pfm:
-      WriteFileAtomically(path, EncodePfm(image));
-      break;
+      return EncodePfm(image);
     case ImageFormat::Exr:
-      WriteFileAtomically(path, EncodeExr(image));
-      break;
+      return EncodeExr(image);
     case ImageFormat::Png:
-      WriteFileAtomically(path, EncodePng(image, exposure));
-      break;
+      return EncodePng(image, exposure);
     case ImageFormat::Ppm:
-      WriteFileAtomically(path, EncodePpm(image, exposure));
-      break;
+      return EncodePpm(image, exposure);
   }
+  return {};
+}
+
+void WriteImage(const Image& image, const std::string& path, double exposure) {
+  WriteFileAtomically(path, EncodeImage(image, FormatFromPath(path), exposure));
 }
 
 void WritePfm(const Image& image, const std::string& path) {

@@ -8,8 +8,6 @@
 
 namespace glint {
 
-namespace {
-
 const char* KindName(RayKind kind) {
   switch (kind) {
     case RayKind::Camera:
@@ -23,6 +21,8 @@ const char* KindName(RayKind kind) {
   }
   return "?";
 }
+
+namespace {
 
 const char* KindColour(RayKind kind) {
   switch (kind) {
@@ -73,36 +73,64 @@ std::string Dot(const RayTree& tree, const Scene& scene, int x, int y, int maxNo
 
 }  // namespace
 
+PixelTrees TracePixelTrees(const RenderArgs& args, const RenderSetup& s,
+                           const Integrator& integrator, int x, int y) {
+  const Camera camera(s.scene.wall, s.scene.camera.eye, s.width, s.height);
+  // The same random numbers as pixel (x, y) of the first pass of `glint render`.
+  const auto index = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(s.width) +
+                     static_cast<std::uint64_t>(x);
+  const int rays = args.spp > 0 ? args.spp : 1;
+  Sampler sampler(SamplerFromArgs(args), args.seed, index, 0, 0, rays);
+  PixelTrees out;
+  RenderStats stats;
+  Pixel pixel;
+  pixel.Render(camera, x, y, rays, integrator, sampler, out.trees, stats, /*keepTrees=*/true);
+  out.radiance = pixel.Radiance();
+  return out;
+}
+
+nlohmann::json TreeJson(const RayTree& tree, const Scene& scene, int maxNodes) {
+  const auto rgb = [](const Colour& c) { return nlohmann::json::array({c.x, c.y, c.z}); };
+  const int count = std::min<int>(maxNodes, static_cast<int>(tree.Size()));
+  nlohmann::json nodes = nlohmann::json::array();
+  for (int i = 0; i < count; ++i) {
+    const Ray& r = tree[static_cast<std::uint32_t>(i)];
+    nlohmann::json children = nlohmann::json::array();
+    for (std::uint32_t k = 0; k < r.childCount; ++k) {
+      if (static_cast<int>(r.firstChild + k) < count) children.push_back(r.firstChild + k);
+    }
+    nodes.push_back({{"kind", KindName(r.kind)},
+                     {"depth", r.depth},
+                     {"hit", r.object >= 0 ? scene.ObjectName(r.object) : "nothing (open front)"},
+                     {"inside", r.inside},
+                     {"final", r.final},
+                     {"weight", rgb(r.weight)},
+                     {"importance", rgb(r.importance)},
+                     {"colour", rgb(r.colour)},
+                     {"children", children}});
+  }
+  return {{"nodes", nodes}, {"total", tree.Size()}};
+}
+
 int RunTree(const TreeArgs& a) {
   int x = 0;
   int y = 0;
   if (std::sscanf(a.pixel.c_str(), "%d,%d", &x, &y) != 2) {
     throw InputError("--pixel " + a.pixel + ": expected X,Y, e.g. --pixel 256,300");
   }
-  RenderArgs args = a.render;
-  const RenderSetup s = Prepare(args, /*checkOutputs=*/false);
+  const RenderSetup s = Prepare(a.render, /*checkOutputs=*/false);
   if (x < 0 || y < 0 || x >= s.width || y >= s.height) {
     throw InputError("--pixel " + a.pixel + ": outside the " + std::to_string(s.width) + "x" +
                      std::to_string(s.height) + " image");
   }
   CheckWritable(a.output);
-  const Camera camera(s.scene.wall, s.scene.camera.eye, s.width, s.height);
-  const std::unique_ptr<Integrator> integrator = MakeIntegrator(args, s);
-  // The same random numbers as pixel (x, y) of the first pass of `glint render`.
-  const auto index = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(s.width) +
-                     static_cast<std::uint64_t>(x);
-  const int rays = args.spp > 0 ? args.spp : 1;
-  Sampler sampler(SamplerFromArgs(args), args.seed, index, 0, 0, rays);
-  RayTree trees;
-  RenderStats stats;
-  Pixel pixel;
-  pixel.Render(camera, x, y, rays, *integrator, sampler, trees, stats,
-               /*keepTrees=*/true);
-  WriteFileAtomically(a.output, Dot(trees, s.scene, x, y, a.maxNodes));
-  const Colour c = pixel.Radiance();
+  const std::unique_ptr<Integrator> integrator = MakeIntegrator(a.render, s);
+  const PixelTrees p = TracePixelTrees(a.render, s, *integrator, x, y);
+  WriteFileAtomically(a.output, Dot(p.trees, s.scene, x, y, a.maxNodes));
+  const Colour c = p.radiance;
   std::fprintf(stderr,
                "glint tree: pixel (%d, %d): %zu ray nodes, radiance %.4g %.4g %.4g; wrote %s\n", x,
-               y, trees.Size(), c.x, c.y, c.z, a.output.c_str());
+               y, p.trees.Size(), c.x, c.y, c.z, a.output.c_str());
   return kExitOk;
 }
 

@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "RenderJob.hpp"
 
 namespace glint {
@@ -16,5 +18,19 @@ struct TreeArgs {
 };
 
 int RunTree(const TreeArgs& args);
+
+const char* KindName(RayKind kind);
+
+// The ray trees of pixel (x, y) as the first pass of `glint render` grows them (its
+// random numbers), with the pixel's radiance.
+struct PixelTrees {
+  RayTree trees;
+  Colour radiance{0.0};
+};
+PixelTrees TracePixelTrees(const RenderArgs& args, const RenderSetup& s,
+                           const Integrator& integrator, int x, int y);
+// The first `maxNodes` nodes: kind, depth, what each hit, W_i, importance, colour and
+// the children's indices (`glint view` draws them).
+nlohmann::json TreeJson(const RayTree& tree, const Scene& scene, int maxNodes);
 
 }  // namespace glint

@@ -18,12 +18,14 @@ packages=(
   libbenchmark-dev    # micro-benchmarks
   python3-matplotlib python3-numpy  # report charts
   graphviz            # ray-tree drawings
+  libcpp-httplib-dev  # glint view: the local HTTP server
 )
 dev_packages=(
   blender             # tools/cycles-render: Cycles references (validate.cycles)
   openexr             # exrheader and friends, to inspect EXR files
   clang libclang-rt-dev  # the scene-loader fuzzer (libFuzzer)
   clang-format clang-tidy cppcheck  # tools/lint
+  chromium python3-websocket  # glint view's browser tests (DevTools protocol)
 )
 
 case "${1:-}" in

@@ -18,5 +18,7 @@ struct ImageError {
 
 // Throws std::invalid_argument if the sizes differ.
 ImageError CompareImages(const Image& image, const Image& reference, int block = 8);
+// Only ImageError::relativeMse, the mean of (x - r)^2 / (r^2 + 0.01); sizes must match.
+double RelativeMse(const Image& image, const Image& reference);
 
 }  // namespace glint

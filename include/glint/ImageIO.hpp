@@ -14,6 +14,10 @@ enum class ImageFormat { Pfm, Exr, Png, Ppm };
 // for anything else.
 ImageFormat FormatFromPath(const std::string& path);
 
+// The bytes of a file of that format: linear radiance (PFM, EXR) or the mapping
+// function's output (PNG, PPM).
+std::string EncodeImage(const Image& image, ImageFormat format, double exposure);
+
 // Writes linear radiance as PFM or OpenEXR, or the mapping function's output as PNG or PPM.
 // Throws std::runtime_error on an I/O failure.
 void WriteImage(const Image& image, const std::string& path, double exposure);

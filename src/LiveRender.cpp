@@ -89,14 +89,17 @@ std::string RgbePixels(const std::string& floats) {
 
 LiveRender::LiveRender(const RenderArgs& args, std::optional<Image> reference)
     : reference_(std::move(reference)), job_(MakeJob(args, 1)) {
-  const RenderSetup& s = job_->setup;
+  CheckReference(job_->setup);
+  thread_ = std::thread([this]() { Loop(); });
+}
+
+void LiveRender::CheckReference(const RenderSetup& s) const {
   if (reference_ && (reference_->Width() != s.width || reference_->Height() != s.height)) {
     throw InputError("--reference: expected an image of " + std::to_string(s.width) + "x" +
                      std::to_string(s.height) + " pixels (the render's size), found " +
                      std::to_string(reference_->Width()) + "x" +
                      std::to_string(reference_->Height()));
   }
-  thread_ = std::thread([this]() { Loop(); });
 }
 
 LiveRender::~LiveRender() {
@@ -123,6 +126,7 @@ std::uint64_t LiveRender::Apply(const RenderArgs& args) {
   const std::shared_ptr<const LiveJob> current = Job();
   if (SettingsJson(args) == SettingsJson(current->args)) return current->generation;
   std::shared_ptr<const LiveJob> job = MakeJob(args, current->generation + 1);  // may throw
+  CheckReference(job->setup);  // a --set of /camera/resolution may change the size
   const std::lock_guard<std::mutex> lock(mutex_);
   job_ = std::move(job);
   restart_ = true;

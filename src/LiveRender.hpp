@@ -75,6 +75,8 @@ class LiveRender {
 
  private:
   static std::shared_ptr<const LiveJob> MakeJob(const RenderArgs& args, std::uint64_t generation);
+  // Refuses a render whose size is not the reference's.
+  void CheckReference(const RenderSetup& s) const;
   void Loop();
 
   std::optional<Image> reference_;

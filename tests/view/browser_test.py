@@ -212,6 +212,7 @@ try:
     check(blue > 50, f"the chart draws relative MSE against time ({blue} pixels of its line)")
     check("relative MSE" in text(browser, "status"), f"status: {text(browser, 'status')}")
     shot(browser, "compare-page", "main")
+
 finally:
     browser.close()
     server.stop()

@@ -4,6 +4,7 @@ client, abandoned passes, a port in use, and a clean stop on SIGTERM and SIGINT.
 
 Usage: safety_test.py GLINT SCENE
 """
+import os
 import signal
 import socket
 import subprocess
@@ -191,6 +192,22 @@ finally:
     code, seconds, rest = server.stop(signal.SIGINT)
 check(code == 0 and seconds < 1.0, f"SIGINT with a keep-alive connection open: exit {code} "
       f"after {seconds:.3f} s")
+
+# With a reference, a setting that changes the image's size is refused (the compare
+# views need the reference's size).
+reference = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data",
+                         "whitted-cornell-64.pfm")
+server = Server(GLINT, SCENE, "--set", "/camera/resolution=[64,64]", "--reference", reference,
+                "--threads", "1")
+try:
+    server.wait_for_frame()
+    status, body = server.json("/api/settings", "set=/camera/resolution=[32,32]")
+    check(status == 400 and "--reference: expected an image of 32x32 pixels (the render's size), "
+          "found 64x64" in body.get("error", ""), f"a size other than the reference's: {body}")
+    status, state = server.json("/api/state")
+    check(status == 200 and state["generation"] == 1, "the render goes on at 64x64")
+finally:
+    server.stop()
 
 # A port in use: a clear error and exit code 1.
 blocker = socket.socket()

@@ -79,7 +79,8 @@ nlohmann::json Settings(const LiveRender& live) {
           {"reference", live.Reference().has_value()}};
 }
 
-void Routes(httplib::Server& server, LiveRender& live, const RenderArgs& base) {
+// The page's assets, its state and its settings.
+void PageRoutes(httplib::Server& server, LiveRender& live, const RenderArgs& base) {
   for (const ViewAsset& asset : ViewAssets()) {
     const std::string path = asset.path;
     server.Get(path == "/index.html" ? "/" : path,
@@ -102,6 +103,10 @@ void Routes(httplib::Server& server, LiveRender& live, const RenderArgs& base) {
     }
     SendJson(res, Settings(live));
   });
+}
+
+// The images: the current frame and the reference, for the page (RGBE).
+void ImageRoutes(httplib::Server& server, LiveRender& live) {
   server.Get("/api/frame", [&live](const httplib::Request&, httplib::Response& res) {
     const std::shared_ptr<const LiveFrame> frame = live.Frame();
     if (!frame) return SendError(res, "no frame yet", 404);
@@ -116,6 +121,10 @@ void Routes(httplib::Server& server, LiveRender& live, const RenderArgs& base) {
     if (!live.Reference()) return SendError(res, "no --reference was given", 404);
     res.set_content(RgbePixels(FloatPixels(*live.Reference())), "application/octet-stream");
   });
+}
+
+// A pixel's ray trees, and the downloads.
+void InspectAndSaveRoutes(httplib::Server& server, LiveRender& live) {
   server.Get("/api/tree", [&live](const httplib::Request& req, httplib::Response& res) {
     const std::shared_ptr<const LiveJob> job = live.Job();
     try {
@@ -235,7 +244,9 @@ int RunView(const ViewArgs& a) {
   std::signal(SIGPIPE, SIG_IGN);  // a browser that goes away mid-answer is not an error
   const std::atomic<bool>& interrupted = InstallInterruptHandlers();
   LiveRender live(a.render, std::move(reference));
-  Routes(server, live, a.render);
+  PageRoutes(server, live, a.render);
+  ImageRoutes(server, live);
+  InspectAndSaveRoutes(server, live);
   std::thread listener([&server]() { server.listen_after_bind(); });
   std::fprintf(stderr, "glint view: http://%s:%d/\n", a.host.c_str(), port);
   while (!interrupted.load()) std::this_thread::sleep_for(std::chrono::milliseconds(50));

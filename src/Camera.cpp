@@ -4,6 +4,7 @@
 #include <omp.h>
 #endif
 
+#include <algorithm>
 #include <atomic>
 #include <stdexcept>
 
@@ -154,8 +155,9 @@ void Camera::Clear() {
   cutShort_.clear();
 }
 
-Image Camera::ToImage() const {
+Image Camera::ToImage(int threads) const {
   Image image(width_, height_);
+#pragma omp parallel for num_threads(std::max(threads, 1)) schedule(static)
   for (int y = 0; y < height_; ++y) {
     for (int x = 0; x < width_; ++x) image.At(x, y) = PixelAt(x, y).Radiance();
   }

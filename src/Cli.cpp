@@ -93,7 +93,7 @@ void AddRenderOptions(CLI::App* render, RenderArgs& args, bool outputs) {
       ->add_option("--mode", args.mode,
                    "Light transport: 'whitted' (point lights, mirrors, refraction) or 'mc' "
                    "(Monte Carlo with the area light)")
-      ->check(CLI::IsMember({"whitted", "mc"}))
+      ->check(CLI::IsMember(kModes))
       ->capture_default_str();
   render->add_option("--size", args.size,
                      "Image size in pixels, N (square) or WxH; default: the scene's camera "
@@ -164,7 +164,7 @@ void AddRenderOptions(CLI::App* render, RenderArgs& args, bool outputs) {
                    "Monte Carlo: 'terminal' walls spawn no child and return their direct "
                    "light (the design's default); 'diffuse' walls also spawn a "
                    "cosine-distributed child (full global illumination)")
-      ->check(CLI::IsMember({"terminal", "diffuse"}))
+      ->check(CLI::IsMember(kWallModes))
       ->capture_default_str();
   render
       ->add_option("--branches", args.branches,
@@ -175,20 +175,20 @@ void AddRenderOptions(CLI::App* render, RenderArgs& args, bool outputs) {
       ->add_option("--glass", args.glass,
                    "Monte Carlo: 'split' glass spawns a reflected and a refracted child "
                    "weighted by Fresnel; 'choose' spawns one, chosen with Fresnel probability")
-      ->check(CLI::IsMember({"split", "choose"}))
+      ->check(CLI::IsMember(kGlassModes))
       ->capture_default_str();
   render
       ->add_option("--fresnel", args.fresnel,
                    "Both modes: glass reflects by the 'exact' Fresnel equations, or by "
                    "the 'small-angle' approximation: the normal-incidence reflectance "
                    "((n-1)/(n+1))^2 at every angle (total internal reflection kept)")
-      ->check(CLI::IsMember({"exact", "small-angle"}))
+      ->check(CLI::IsMember(kFresnelModels))
       ->capture_default_str();
   render
       ->add_option("--strategy", args.strategy,
                    "Monte Carlo, at Phong objects: 'mis' (light and BRDF sampling, power "
                    "heuristic), 'light' (light sampling only) or 'brdf' (BRDF sampling only)")
-      ->check(CLI::IsMember({"mis", "light", "brdf"}))
+      ->check(CLI::IsMember(kStrategies))
       ->capture_default_str();
   render
       ->add_option("--sampler", args.sampler,
@@ -197,7 +197,7 @@ void AddRenderOptions(CLI::App* render, RenderArgs& args, bool outputs) {
                    "'stratified' (jittered strata for the pixel and the first light point "
                    "and direction) or 'sobol' (an Owen-scrambled Sobol sequence per pixel; "
                    "passes continue it; the default: lowest error at equal time)")
-      ->check(CLI::IsMember({"random", "stratified", "sobol"}))
+      ->check(CLI::IsMember(kSamplers))
       ->capture_default_str();
   render->add_flag("-q,--quiet", args.quiet, "No progress bar and no summary line");
 }
@@ -273,13 +273,13 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
       ->check(CLI::Range(1, 1 << 20));
   benchCommand->add_option("--modes", bench.modes, "Modes to measure: mc, whitted or both")
       ->delimiter(',')
-      ->check(CLI::IsMember({"whitted", "mc"}))
+      ->check(CLI::IsMember(kModes))
       ->capture_default_str();
   benchCommand->add_option("--repeat", bench.repeat, "Timed runs per row; the best one counts")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   benchCommand->add_option("--sampler", bench.sampler, "Sampler: random, stratified or sobol")
-      ->check(CLI::IsMember({"random", "stratified", "sobol"}))
+      ->check(CLI::IsMember(kSamplers))
       ->capture_default_str();
   benchCommand->add_option("--json", bench.json, "Also write the table as JSON to this file");
 

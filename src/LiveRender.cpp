@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 
 #include "ViewSettings.hpp"
 #include "glint/ImageError.hpp"
 #include "glint/JsonReader.hpp"
 #include "glint/PassSchedule.hpp"
+#include "glint/SceneLoader.hpp"
 
 namespace glint {
 
@@ -24,56 +24,14 @@ void Thin(std::vector<std::array<double, 2>>& points) {
   points.resize(kept);
 }
 
-// The camera's pixels as FloatPixels, in parallel: the render's threads would otherwise
-// wait for it between passes (at 512x512 it is 3% of a 0.25 s pass on one thread).
-std::string CameraFloats(const Camera& camera, int threads) {
-  const std::size_t count =
-      static_cast<std::size_t>(camera.Width()) * static_cast<std::size_t>(camera.Height());
-  std::string bytes(count * 3 * sizeof(float), '\0');
-  char* out = bytes.data();
-#pragma omp parallel for num_threads(threads) schedule(static)
-  for (std::size_t i = 0; i < count; ++i) {
-    const Colour c = camera.PixelAt(i).Radiance();
-    const float rgb[3] = {static_cast<float>(c.x), static_cast<float>(c.y),
-                          static_cast<float>(c.z)};
-    std::memcpy(out + i * sizeof rgb, rgb, sizeof rgb);
-  }
-  return bytes;
-}
-
 }  // namespace
 
-std::string FloatPixels(const Image& image) {
-  std::string bytes(image.Pixels().size() * 3 * sizeof(float), '\0');
-  for (std::size_t i = 0; i < image.Pixels().size(); ++i) {
-    const Colour c = image.Pixels()[i];
-    const float rgb[3] = {static_cast<float>(c.x), static_cast<float>(c.y),
-                          static_cast<float>(c.z)};
-    std::memcpy(bytes.data() + i * sizeof rgb, rgb, sizeof rgb);
-  }
-  return bytes;
-}
-
-Image ImageFromFloats(const std::string& pixels, int width, int height) {
-  Image image(width, height);
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      float rgb[3];
-      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                            static_cast<std::size_t>(x);
-      std::memcpy(rgb, pixels.data() + i * sizeof rgb, sizeof rgb);
-      image.At(x, y) = Colour(rgb[0], rgb[1], rgb[2]);
-    }
-  }
-  return image;
-}
-
-std::string RgbePixels(const std::string& floats) {
-  const std::size_t count = floats.size() / (3 * sizeof(float));
-  std::string bytes(count * 4, '\0');
-  for (std::size_t i = 0; i < count; ++i) {
-    float rgb[3];
-    std::memcpy(rgb, floats.data() + i * sizeof rgb, sizeof rgb);
+std::string RgbePixels(const Image& image) {
+  const std::vector<Colour>& pixels = image.Pixels();
+  std::string bytes(pixels.size() * 4, '\0');
+  for (std::size_t i = 0; i < pixels.size(); ++i) {
+    const float rgb[3] = {static_cast<float>(pixels[i].x), static_cast<float>(pixels[i].y),
+                          static_cast<float>(pixels[i].z)};
     const float m = std::max({rgb[0], rgb[1], rgb[2]});
     if (!(m > 1e-32F) || !std::isfinite(m)) continue;  // black
     int e = 0;
@@ -117,6 +75,8 @@ std::shared_ptr<const LiveJob> LiveRender::MakeJob(const RenderArgs& args,
   auto job = std::make_shared<LiveJob>();
   job->args = args;
   job->setup = Prepare(args, /*checkOutputs=*/false);
+  job->document = LoadSceneDocument(args.scene, args.overrides);
+  job->tunables = Tunables(job->document);
   job->integrator = MakeIntegrator(args, job->setup);
   job->generation = generation;
   return job;
@@ -152,7 +112,7 @@ void LiveRender::Loop() {
   int rays = 1;
   while (!stop_) {
     restart_ = false;
-    if (job == nullptr || job != Job()) {
+    if (job != Job()) {  // the first pass, new settings, or one abandoned
       job = Job();
       const RenderSetup& s = job->setup;
       start = Clock::now();
@@ -186,11 +146,11 @@ void LiveRender::Loop() {
     progress.raysTraced += stats.TracedRays();
     progress.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     auto frame = std::make_shared<LiveFrame>(progress);
-    frame->width = camera->Width();
-    frame->height = camera->Height();
-    frame->pixels = CameraFloats(*camera, job->setup.threads);
+    // In parallel: the render's threads would otherwise wait for it between passes (at
+    // 512x512 one thread took 3% of a 0.25 s pass).
+    frame->image = camera->ToImage(job->setup.threads);
     if (reference_) {
-      progress.error.push_back({progress.seconds, RelativeMse(frame->ToImage(), *reference_)});
+      progress.error.push_back({progress.seconds, RelativeMse(frame->image, *reference_)});
       if (progress.error.size() > kMaxErrorPoints) Thin(progress.error);
       frame->error = progress.error;
     }

@@ -13,6 +13,8 @@
 #include <thread>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "RenderJob.hpp"
 #include "glint/Image.hpp"
 
@@ -22,33 +24,30 @@ namespace glint {
 struct LiveJob {
   RenderArgs args;
   RenderSetup setup;
+  // The scene file with the settings' --set applied (the page saves it; `glint render`
+  // reads it back), and the scene values the page offers sliders for (Tunables).
+  nlohmann::json document;
+  nlohmann::json tunables;
   std::unique_ptr<Integrator> integrator;
   std::uint64_t generation = 0;  // 1, 2, ...: one more for each change of settings
 };
 
-// Linear radiance as the page takes it: float32 RGB, row 0 first; and back.
-std::string FloatPixels(const Image& image);
-Image ImageFromFloats(const std::string& pixels, int width, int height);
-// The same in Ward's RGBE (4 bytes a pixel: a mantissa per channel and a shared exponent,
-// about 1% precision), for the page: a third of the bytes, and most of the browser's
-// work is receiving them (BENCHMARKS.md).
-std::string RgbePixels(const std::string& floats);
+// Linear radiance as the page takes it, row 0 first, in Ward's RGBE (4 bytes a pixel: a
+// mantissa per channel and a shared exponent, about 1% precision): a third of the bytes
+// of float32, and most of the browser's work is receiving them (BENCHMARKS.md).
+std::string RgbePixels(const Image& image);
 
 // The image after a pass and what it took.
 struct LiveFrame {
   std::uint64_t id = 0;  // counts frames across generations
   std::uint64_t generation = 0;
-  int width = 0;
-  int height = 0;
-  std::string pixels;  // linear radiance, float32 RGB little-endian, row 0 (the top) first
+  Image image;
   std::uint32_t passes = 0;
   std::uint64_t spp = 0;         // rays per pixel accumulated
   double seconds = 0.0;          // since this generation began, its set-up included
   std::uint64_t raysTraced = 0;  // RenderStats::TracedRays of all its passes
   // (seconds, relative MSE against the reference) after each pass, when there is one.
   std::vector<std::array<double, 2>> error;
-
-  Image ToImage() const { return ImageFromFloats(pixels, width, height); }
 };
 
 class LiveRender {

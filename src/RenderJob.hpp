@@ -45,6 +45,15 @@ struct RenderArgs {
   const Cluster* cluster = nullptr;
 };
 
+// The values each switch of a render takes: the command line and glint view's URL query
+// check them against the same lists.
+inline const std::vector<std::string> kModes = {"whitted", "mc"};
+inline const std::vector<std::string> kWallModes = {"terminal", "diffuse"};
+inline const std::vector<std::string> kGlassModes = {"split", "choose"};
+inline const std::vector<std::string> kFresnelModels = {"exact", "small-angle"};
+inline const std::vector<std::string> kStrategies = {"mis", "light", "brdf"};
+inline const std::vector<std::string> kSamplers = {"random", "stratified", "sobol"};
+
 // The switches that mean something in Monte Carlo mode only.
 inline constexpr const char* kMonteCarloSwitches[] = {"--walls", "--branches", "--glass",
                                                       "--strategy"};

@@ -326,10 +326,15 @@ Scene SceneFromJson(const nlohmann::json& document, const std::string& file) {
   return scene;
 }
 
-Scene LoadScene(const std::string& path, const std::vector<std::string>& overrides) {
+nlohmann::json LoadSceneDocument(const std::string& path,
+                                 const std::vector<std::string>& overrides) {
   nlohmann::json document = ReadJsonFile(path);
   for (const std::string& o : overrides) ApplyOverride(document, o, path);
-  return SceneFromJson(document, path);
+  return document;
+}
+
+Scene LoadScene(const std::string& path, const std::vector<std::string>& overrides) {
+  return SceneFromJson(LoadSceneDocument(path, overrides), path);
 }
 
 }  // namespace glint

@@ -75,7 +75,7 @@ nlohmann::json Settings(const LiveRender& live) {
           {"threads", job->setup.threads},
           {"exposure", job->setup.exposure},
           {"settings", SettingsJson(job->args)},
-          {"tunables", Tunables(SceneDocument(job->args))},
+          {"tunables", job->tunables},
           {"reference", live.Reference().has_value()}};
 }
 
@@ -113,13 +113,13 @@ void ImageRoutes(httplib::Server& server, LiveRender& live) {
     res.set_header("Cache-Control", "no-store");
     res.set_header("X-Glint-Frame", std::to_string(frame->id));
     res.set_header("X-Glint-Generation", std::to_string(frame->generation));
-    res.set_header("X-Glint-Size",
-                   std::to_string(frame->width) + "x" + std::to_string(frame->height));
-    res.set_content(RgbePixels(frame->pixels), "application/octet-stream");
+    res.set_header("X-Glint-Size", std::to_string(frame->image.Width()) + "x" +
+                                       std::to_string(frame->image.Height()));
+    res.set_content(RgbePixels(frame->image), "application/octet-stream");
   });
   server.Get("/api/reference", [&live](const httplib::Request&, httplib::Response& res) {
     if (!live.Reference()) return SendError(res, "no --reference was given", 404);
-    res.set_content(RgbePixels(FloatPixels(*live.Reference())), "application/octet-stream");
+    res.set_content(RgbePixels(*live.Reference()), "application/octet-stream");
   });
 }
 
@@ -164,7 +164,7 @@ void InspectAndSaveRoutes(httplib::Server& server, LiveRender& live) {
       if (name != format) continue;
       res.set_header("Content-Disposition", "attachment; filename=\"glint-view." + name + "\"");
       res.set_header("X-Glint-Frame", std::to_string(frame->id));
-      res.set_content(EncodeImage(frame->ToImage(), f, exposure),
+      res.set_content(EncodeImage(frame->image, f, exposure),
                       name == "png" ? "image/png" : "application/octet-stream");
       return;
     }
@@ -175,7 +175,7 @@ void InspectAndSaveRoutes(httplib::Server& server, LiveRender& live) {
     res.set_header("Content-Disposition",
                    "attachment; filename=\"" +
                        std::filesystem::path(job->args.scene).stem().string() + "-view.json\"");
-    res.set_content(SceneDocument(job->args).dump(2) + "\n", "application/json");
+    res.set_content(job->document.dump(2) + "\n", "application/json");
   });
 }
 
@@ -199,9 +199,6 @@ std::string WhyNotBound(const std::string& host, int port) {
 }  // namespace
 
 int RunView(const ViewArgs& a) {
-  if (a.port < 0 || a.port > 65535) {
-    throw InputError("--port " + std::to_string(a.port) + ": expected a number in [0, 65535]");
-  }
   std::optional<Image> reference;
   if (!a.reference.empty()) {
     try {

@@ -5,8 +5,8 @@
 
 #include <httplib.h>
 
+#include "glint/JsonReader.hpp"
 #include "glint/MonteCarloIntegrator.hpp"
-#include "glint/SceneLoader.hpp"
 
 namespace glint {
 
@@ -65,20 +65,20 @@ RenderArgs ArgsFromQuery(const RenderArgs& base, const QueryParams& query) {
   bool sets = false;
   for (const auto& [key, value] : query) {
     if (key == "mode") {
-      args.mode = Choice(key, value, {"whitted", "mc"});
+      args.mode = Choice(key, value, kModes);
     } else if (key == "walls") {
-      args.walls = Choice(key, value, {"terminal", "diffuse"});
+      args.walls = Choice(key, value, kWallModes);
     } else if (key == "strategy") {
-      args.strategy = Choice(key, value, {"mis", "light", "brdf"});
+      args.strategy = Choice(key, value, kStrategies);
     } else if (key == "glass") {
-      args.glass = Choice(key, value, {"split", "choose"});
+      args.glass = Choice(key, value, kGlassModes);
     } else if (key == "branches") {
       args.branches =
           static_cast<int>(WholeNumber(key, value, 1, MonteCarloIntegrator::kMaxBranches));
     } else if (key == "fresnel") {
-      args.fresnel = Choice(key, value, {"exact", "small-angle"});
+      args.fresnel = Choice(key, value, kFresnelModels);
     } else if (key == "sampler") {
-      args.sampler = Choice(key, value, {"random", "stratified", "sobol"});
+      args.sampler = Choice(key, value, kSamplers);
     } else if (key == "seed") {
       args.seed = static_cast<std::uint64_t>(WholeNumber(key, value, 0, 1L << 62));
     } else if (key == "set") {
@@ -145,12 +145,6 @@ nlohmann::json Tunables(const nlohmann::json& document) {
         grey(lights[i].value("intensity", nlohmann::json())), 0.0, 5.0, 0.05, "whitted", true);
   }
   return out;
-}
-
-nlohmann::json SceneDocument(const RenderArgs& args) {
-  nlohmann::json document = ReadJsonFile(args.scene);
-  for (const std::string& o : args.overrides) ApplyOverride(document, o, args.scene);
-  return document;
 }
 
 }  // namespace glint

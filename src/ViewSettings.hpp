@@ -33,7 +33,4 @@ nlohmann::json SettingsJson(const RenderArgs& args);
 // lights' intensities (whitted); each with its value in `document` and a range.
 nlohmann::json Tunables(const nlohmann::json& document);
 
-// The scene file with the settings' --set applied: what `glint render` reads back.
-nlohmann::json SceneDocument(const RenderArgs& args);
-
 }  // namespace glint

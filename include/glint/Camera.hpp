@@ -93,7 +93,8 @@ class Camera {
   // Pixel i of the array, row by row (checkpoints and MPI move pixels by index).
   const Pixel& PixelAt(std::size_t i) const { return pixels_[i]; }
   Pixel& PixelAt(std::size_t i) { return pixels_[i]; }
-  Image ToImage() const;
+  // `threads` > 1 fills the image's rows in parallel (a live view does it after each pass).
+  Image ToImage(int threads = 1) const;
   // Saves through the mapping function (PNG, PPM) or as linear radiance (PFM).
   void Save(const std::string& path, double exposure) const;
 

@@ -25,7 +25,11 @@ void ApplyOverride(nlohmann::json& document, const std::string& assignment,
 // Builds and validates a scene; every error is an InputError naming the field.
 Scene SceneFromJson(const nlohmann::json& document, const std::string& file);
 
-// ReadJsonFile, the overrides in order, then SceneFromJson.
+// ReadJsonFile, then the overrides in order: the document a scene is built from.
+nlohmann::json LoadSceneDocument(const std::string& path,
+                                 const std::vector<std::string>& overrides = {});
+
+// LoadSceneDocument, then SceneFromJson.
 Scene LoadScene(const std::string& path, const std::vector<std::string>& overrides = {});
 
 }  // namespace glint

@@ -3,8 +3,10 @@
 #include <benchmark/benchmark.h>
 
 #include "RaySets.hpp"
+#include "glint/MirroredLight.hpp"
 #include "glint/Phong.hpp"
 #include "glint/Sampler.hpp"
+#include "glint/SphereReflection.hpp"
 
 namespace glint::bench {
 namespace {
@@ -113,6 +115,55 @@ void LightSampleLi(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(LightSampleLi);
+
+// The light seen in the mirrors of the mirror scene, from the first hits of camera rays
+// that land on its walls (hit points and normals kept in ShadowRays' origins and
+// directions): the sphere's reflection point alone, and the whole estimate with its
+// shadow segments.
+const Scene& MirrorScene() {
+  static const Scene scene =
+      LoadScene(std::string(GLINT_SOURCE_DIR) + "/scenes/cornell-mirror.json");
+  return scene;
+}
+const RaySet& MirrorScenePoints() {
+  static const RaySet set = FromFirstHits(
+      MirrorScene(), kRays, 4, [](vec3 p, vec3 n, Pcg32&, RaySet& out) { out.Add(p, n, 0.0); });
+  return set;
+}
+
+void ReflectOffMirrorSphere(benchmark::State& state) {
+  const Sphere& sphere = MirrorScene().spheres[0];  // O1
+  const Light& light = *MirrorScene().light;
+  const RaySet& points = MirrorScenePoints();
+  Pcg32 rng(1, 1);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const vec3 y = light.SamplePoint(rng.Uniform(), rng.Uniform());
+    benchmark::DoNotOptimize(
+        ReflectOffSphere(sphere.Centre(), sphere.Radius(), points.origins[i], y));
+    i = i + 1 == points.Size() ? 0 : i + 1;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(ReflectOffMirrorSphere);
+
+void MirroredLightIrradiance(benchmark::State& state) {
+  const MirroredLight mirrored(MirrorScene(), *MirrorScene().light);
+  const RaySet& points = MirrorScenePoints();
+  Pcg32 rng(1, 1);
+  RenderStats stats;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const double u = rng.Uniform();
+    benchmark::DoNotOptimize(
+        mirrored.Irradiance(points.origins[i], points.directions[i], u, rng.Uniform(), stats));
+    i = i + 1 == points.Size() ? 0 : i + 1;
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["segments"] =
+      static_cast<double>(stats.shadowRays) / static_cast<double>(state.iterations());
+}
+BENCHMARK(MirroredLightIrradiance);
 
 }  // namespace
 }  // namespace glint::bench

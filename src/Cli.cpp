@@ -191,6 +191,13 @@ void AddRenderOptions(CLI::App* render, RenderArgs& args, bool outputs) {
       ->check(CLI::IsMember(kStrategies))
       ->capture_default_str();
   render
+      ->add_option("--mirror-light", args.mirrorLight,
+                   "Monte Carlo with diffuse walls: the light a wall sees in a mirror (a mirror "
+                   "cube's faces, a mirror sphere) by 'nee', next-event estimation through the "
+                   "mirror, or by 'brdf', only the wall's cosine-sampled rays that find it")
+      ->check(CLI::IsMember(kMirrorLightModes))
+      ->capture_default_str();
+  render
       ->add_option("--sampler", args.sampler,
                    "Both modes: where each random decision's numbers come from: 'random' "
                    "(independent uniforms, the design's random number generator), "
@@ -240,7 +247,7 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
   conv->add_option("--compare", converge.compare,
                    "Compare values of one switch in one chart: strategy=mis,light,brdf, "
                    "glass=split,choose, fresnel=exact,small-angle, walls=terminal,diffuse, "
-                   "branches=1,2,4 or sampler=random,stratified,sobol");
+                   "branches=1,2,4, sampler=random,stratified,sobol or mirror-light=nee,brdf");
   TreeArgs tree;
   CLI::App* treeCommand = app.add_subcommand(
       "tree", "Write the ray trees of one pixel as a Graphviz graph (render it with dot -Tpng)");

@@ -77,6 +77,9 @@ std::vector<Variant> ParseVariants(const ConvergeArgs& a) {
     } else if (key == "sampler") {
       allow({"random", "stratified", "sobol"});
       v.args.sampler = value;
+    } else if (key == "mirror-light") {
+      allow({"nee", "brdf"});
+      v.args.mirrorLight = value;
     } else if (key == "branches") {
       const int b = std::atoi(value.c_str());
       if (b < 1 || b > MonteCarloIntegrator::kMaxBranches || std::to_string(b) != value) {
@@ -84,8 +87,9 @@ std::vector<Variant> ParseVariants(const ConvergeArgs& a) {
       }
       v.args.branches = b;
     } else {
-      throw InputError("--compare " + a.compare +
-                       ": KEY must be strategy, glass, fresnel, walls, branches or sampler");
+      throw InputError(
+          "--compare " + a.compare +
+          ": KEY must be strategy, glass, fresnel, walls, branches, sampler or mirror-light");
     }
     out.push_back(v);
   }

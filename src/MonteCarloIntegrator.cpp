@@ -17,7 +17,13 @@ const Light& RequireLight(const Scene& scene) {
 }  // namespace
 
 MonteCarloIntegrator::MonteCarloIntegrator(const Scene& scene, MonteCarloOptions options)
-    : scene_(scene), light_(RequireLight(scene)), options_(options) {
+    : scene_(scene),
+      light_(RequireLight(scene)),
+      options_(options),
+      mirrored_(scene, light_),
+      useMirrored_(options.walls == MonteCarloOptions::Walls::Diffuse &&
+                   options.mirrorLight == MonteCarloOptions::MirrorLight::Nee &&
+                   !mirrored_.Empty()) {
   if (options_.branches < 1 || options_.branches > kMaxBranches) {
     throw std::invalid_argument("branches must be in [1, 64]");
   }
@@ -51,8 +57,8 @@ Colour MonteCarloIntegrator::EndAtTerminalWall(Ray& ray, const Hit& hit, vec3 n,
 
 double MonteCarloIntegrator::EmissionWeight(const Ray& ray, vec3 lightPoint) const {
   using Strategy = MonteCarloOptions::Strategy;
-  if (ray.kind == RayKind::Diffuse) return 0.0;  // walls count the light by NEE only
-  if (ray.pdf == 0.0) return 1.0;  // camera, mirror and glass directions: nothing else sees it
+  if (ray.lightCounted) return 0.0;  // next-event estimation counted it
+  if (ray.pdf == 0.0) return 1.0;    // camera, mirror and glass directions: nothing else sees it
   switch (options_.strategy) {
     case Strategy::Light:
       return 0.0;
@@ -92,7 +98,8 @@ int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, std::u
       // Cosine sampling: f cos / p = (rho / pi) cos / (cos / pi) = rho.
       const Sample2 uv = sampler.Get2D(SampleDimension::Scatter(node));
       const vec3 w = Frame::FromZ(n).ToWorld(SampleCosineHemisphere(uv.u, uv.v));
-      out[0] = {glm::normalize(w), m.reflectance, 0.0, RayKind::Diffuse, ray.inside};
+      // The light it may reach: counted by next-event estimation at this wall.
+      out[0] = {glm::normalize(w), m.reflectance, 0.0, RayKind::Diffuse, ray.inside, true};
       return 1;
     }
     case MaterialType::Phong: {
@@ -102,8 +109,9 @@ int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, std::u
             sampler.Get2D(i == 0 ? SampleDimension::Scatter(node)
                                  : SampleDimension::Extra(node, static_cast<std::uint32_t>(i)));
         const PhongSample s = SamplePhong(m, d, n, uv.u, uv.v);
-        out[i] = {s.direction, s.weight / static_cast<double>(k), k * s.pdf, RayKind::Reflected,
-                  ray.inside};
+        out[i] = {s.direction, s.weight / static_cast<double>(k),
+                  k * s.pdf,   RayKind::Reflected,
+                  ray.inside,  false};
       }
       return k;
     }
@@ -111,8 +119,10 @@ int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, std::u
       // A perfect mirror reflects rho at every angle (spec, "Objects"), as Whitted's
       // mirror and Cycles' sharp Glossy BSDF do. (The normalised Phong lobe's n -> infinity
       // limit is not this mirror: its albedo tends to rho cos(theta).)
+      // The light it reaches after a diffuse ray: MirroredLight counted it at that ray's wall.
       const vec3 r = glm::normalize(Reflect(d, n));
-      out[0] = {r, m.reflectance, 0.0, RayKind::Reflected, ray.inside};
+      const bool counted = useMirrored_ && ray.kind == RayKind::Diffuse;
+      out[0] = {r, m.reflectance, 0.0, RayKind::Reflected, ray.inside, counted};
       return 1;
     }
     case MaterialType::Glass: {
@@ -123,16 +133,16 @@ int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, std::u
       if (options_.glass == MonteCarloOptions::Glass::Choose) {
         // One child, reflection with probability F: weight F / F = (1 - F) / (1 - F) = 1.
         if (!refracted || sampler.Get1D(SampleDimension::Choice(node)) < f) {
-          out[0] = {mirror, Colour(1.0), 0.0, RayKind::Reflected, ray.inside};
+          out[0] = {mirror, Colour(1.0), 0.0, RayKind::Reflected, ray.inside, false};
         } else {
-          out[0] = {*refracted, Colour(1.0), 0.0, RayKind::Refracted, !ray.inside};
+          out[0] = {*refracted, Colour(1.0), 0.0, RayKind::Refracted, !ray.inside, false};
         }
         return 1;
       }
       int count = 0;
-      if (f > 0.0) out[count++] = {mirror, Colour(f), 0.0, RayKind::Reflected, ray.inside};
+      if (f > 0.0) out[count++] = {mirror, Colour(f), 0.0, RayKind::Reflected, ray.inside, false};
       if (refracted && f < 1.0) {
-        out[count++] = {*refracted, Colour(1.0 - f), 0.0, RayKind::Refracted, !ray.inside};
+        out[count++] = {*refracted, Colour(1.0 - f), 0.0, RayKind::Refracted, !ray.inside, false};
       }
       return count;
     }
@@ -177,6 +187,14 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::
     }
     colour += DirectLight(hit, ray.direction, n, 0.0, sampler.Get2D(SampleDimension::Light(node)),
                           stats, shaft.areaLightVisible);
+    // And the light seen in the mirrors, estimated at a wall hit with probability
+    // kMirroredLightProbability (and divided by it).
+    if (useMirrored_ &&
+        sampler.Get1D(SampleDimension::MirroredLight(node) + 2) < kMirroredLightProbability) {
+      const Sample2 uv = sampler.Get2D(SampleDimension::MirroredLight(node));
+      colour += m.reflectance * (kInvPi / kMirroredLightProbability) *
+                mirrored_.Irradiance(hit.point, n, uv.u, uv.v, stats);
+    }
   } else if (m.type == MaterialType::Phong && options_.strategy != Strategy::Brdf) {
     const double misBranches =
         options_.strategy == Strategy::Mis ? static_cast<double>(options_.branches) : 0.0;
@@ -222,6 +240,7 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::
     child.pdf = c.pdf;
     child.kind = c.kind;
     child.inside = c.inside;
+    child.lightCounted = c.lightCounted;
     child.depth = static_cast<std::uint8_t>(depth + 1);
     switch (c.kind) {
       case RayKind::Refracted:

@@ -107,6 +107,12 @@ RenderSetup Prepare(const RenderArgs& args, bool checkOutputs) {
     throw InputError(args.monteCarloSwitches.front() + ": means nothing with --mode " + args.mode +
                      " (a Monte Carlo switch; use --mode mc)");
   }
+  for (const std::string& name : args.monteCarloSwitches) {
+    if (args.walls != "diffuse" && name.find("mirror-light") != std::string::npos) {
+      throw InputError(name + ": means nothing with --walls " + args.walls +
+                       " (the light seen in a mirror reaches a wall only with --walls diffuse)");
+    }
+  }
   RenderSetup s;
   s.scene = LoadScene(args.scene, args.overrides);
   for (const std::string& w : s.scene.warnings)
@@ -155,6 +161,7 @@ MonteCarloOptions McOptions(const RenderArgs& args, const ModeSettings& mode) {
                : args.strategy == "brdf" ? O::Strategy::Brdf
                                          : O::Strategy::Mis;
   o.branches = args.branches;
+  o.mirrorLight = args.mirrorLight == "brdf" ? O::MirrorLight::Brdf : O::MirrorLight::Nee;
   o.maxDepth = mode.maxDepth;
   return o;
 }
@@ -199,6 +206,7 @@ nlohmann::json RenderIdentity(const RenderArgs& args, const RenderSetup& s) {
     j["--glass"] = args.glass;
     j["--strategy"] = args.strategy;
     j["--branches"] = args.branches;
+    j["--mirror-light"] = args.mirrorLight;
   }
   return j;
 }
@@ -363,11 +371,9 @@ std::string StatsJson(const RenderArgs& args, const RenderSetup& s, const Camera
   j["fresnel"] = args.fresnel;
   j["sampler"] = args.sampler;
   if (args.mode == "mc") {
-    j["mc"] = {{"walls", args.walls},
-               {"glass", args.glass},
-               {"fresnel", args.fresnel},
-               {"strategy", args.strategy},
-               {"branches", args.branches}};
+    j["mc"] = {{"walls", args.walls},       {"glass", args.glass},
+               {"fresnel", args.fresnel},   {"strategy", args.strategy},
+               {"branches", args.branches}, {"mirror_light", args.mirrorLight}};
   }
   j["view_plane_distance"] = camera.ViewPlaneDistance();
   return j.dump(2) + "\n";

@@ -32,6 +32,7 @@ struct RenderArgs {
   std::string fresnel = "exact";
   std::string strategy = "mis";
   int branches = 1;
+  std::string mirrorLight = "nee";
   std::string sampler = "sobol";  // the equal-time study's winner (BENCHMARKS.md)
   // The Monte Carlo switches given on the command line (--walls, ...): with --mode
   // whitted they mean nothing, and Prepare refuses them.
@@ -52,11 +53,12 @@ inline const std::vector<std::string> kWallModes = {"terminal", "diffuse"};
 inline const std::vector<std::string> kGlassModes = {"split", "choose"};
 inline const std::vector<std::string> kFresnelModels = {"exact", "small-angle"};
 inline const std::vector<std::string> kStrategies = {"mis", "light", "brdf"};
+inline const std::vector<std::string> kMirrorLightModes = {"nee", "brdf"};
 inline const std::vector<std::string> kSamplers = {"random", "stratified", "sobol"};
 
 // The switches that mean something in Monte Carlo mode only.
 inline constexpr const char* kMonteCarloSwitches[] = {"--walls", "--branches", "--glass",
-                                                      "--strategy"};
+                                                      "--strategy", "--mirror-light"};
 
 // The --sampler of the command line (checked by the parser).
 SamplerKind SamplerFromArgs(const RenderArgs& args);

@@ -72,6 +72,8 @@ RenderArgs ArgsFromQuery(const RenderArgs& base, const QueryParams& query) {
       args.strategy = Choice(key, value, kStrategies);
     } else if (key == "glass") {
       args.glass = Choice(key, value, kGlassModes);
+    } else if (key == "mirror-light") {
+      args.mirrorLight = Choice(key, value, kMirrorLightModes);
     } else if (key == "branches") {
       args.branches =
           static_cast<int>(WholeNumber(key, value, 1, MonteCarloIntegrator::kMaxBranches));
@@ -86,9 +88,10 @@ RenderArgs ArgsFromQuery(const RenderArgs& base, const QueryParams& query) {
       sets = true;
       if (!value.empty()) args.overrides.push_back(value);
     } else if (key != "exposure") {
-      throw InputError("unknown setting '" + key +
-                       "': expected mode, walls, strategy, glass, branches, fresnel, sampler, "
-                       "seed, set or exposure");
+      throw InputError(
+          "unknown setting '" + key +
+          "': expected mode, walls, strategy, glass, mirror-light, branches, fresnel, sampler, "
+          "seed, set or exposure");
     }
     for (const char* name : kMonteCarloSwitches) {
       if (std::string("--") + key == name) args.monteCarloSwitches.emplace_back(name);
@@ -98,9 +101,16 @@ RenderArgs ArgsFromQuery(const RenderArgs& base, const QueryParams& query) {
 }
 
 nlohmann::json SettingsJson(const RenderArgs& args) {
-  return {{"mode", args.mode},       {"walls", args.walls},       {"strategy", args.strategy},
-          {"glass", args.glass},     {"branches", args.branches}, {"fresnel", args.fresnel},
-          {"sampler", args.sampler}, {"seed", args.seed},         {"set", args.overrides}};
+  return {{"mode", args.mode},
+          {"walls", args.walls},
+          {"strategy", args.strategy},
+          {"glass", args.glass},
+          {"mirror-light", args.mirrorLight},
+          {"branches", args.branches},
+          {"fresnel", args.fresnel},
+          {"sampler", args.sampler},
+          {"seed", args.seed},
+          {"set", args.overrides}};
 }
 
 nlohmann::json Tunables(const nlohmann::json& document) {

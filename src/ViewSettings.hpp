@@ -19,10 +19,10 @@ using QueryParams = std::vector<std::pair<std::string, std::string>>;
 QueryParams ParseQuery(const std::string& text);
 
 // `base` (the command line's) with the query's values in place of its own. Keys: mode,
-// walls, strategy, glass, branches, fresnel, sampler, seed, set (repeatable; when given,
-// the list replaces the command line's --set) and exposure (the page's own, ignored).
-// A Monte Carlo switch with mode=whitted is refused, as on the command line (Prepare).
-// Throws InputError naming the setting, what was expected and what was found.
+// walls, strategy, glass, mirror-light, branches, fresnel, sampler, seed, set (repeatable; when
+// given, the list replaces the command line's --set) and exposure (the page's own, ignored). A
+// Monte Carlo switch with mode=whitted is refused, as on the command line (Prepare). Throws
+// InputError naming the setting, what was expected and what was found.
 RenderArgs ArgsFromQuery(const RenderArgs& base, const QueryParams& query);
 
 // The settings the page shows: every key above but exposure.

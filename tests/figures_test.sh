@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# figures_test.sh SOURCE_DIR GLINT OUT: tools/figures --quick writes all eleven figures, a
+# figures_test.sh SOURCE_DIR GLINT OUT: tools/figures --quick writes all twelve figures, a
 # well-formed CSV behind each, and the report page that shows them.
 set -eu
 src=$1
@@ -12,8 +12,8 @@ import csv, glob, os, sys
 out = sys.argv[1]
 pngs = sorted(glob.glob(os.path.join(out, "[0-9]*-*.png")))
 csvs = sorted(glob.glob(os.path.join(out, "[0-9]*-*.csv")))
-assert len(pngs) == 11, f"{len(pngs)} figures: {pngs}"
-assert len(csvs) == 11, f"{len(csvs)} tables: {csvs}"
+assert len(pngs) == 12, f"{len(pngs)} figures: {pngs}"
+assert len(csvs) == 12, f"{len(csvs)} tables: {csvs}"
 for p in pngs:
     with open(p, "rb") as f:
         assert f.read(8) == b"\x89PNG\r\n\x1a\n", p

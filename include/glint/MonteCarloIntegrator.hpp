@@ -8,6 +8,7 @@
 #include "glint/Integrator.hpp"
 #include "glint/Light.hpp"
 #include "glint/Material.hpp"
+#include "glint/MirroredLight.hpp"
 #include "glint/Scene.hpp"
 
 namespace glint {
@@ -17,13 +18,18 @@ struct MonteCarloOptions {
   enum class Glass { Split, Choose };
   using Fresnel = FresnelModel;
   enum class Strategy { Mis, Light, Brdf };
+  enum class MirrorLight { Nee, Brdf };
 
   Walls walls = Walls::Terminal;  // terminal: a wall hit spawns no child (the design)
   Glass glass = Glass::Split;     // split: reflect and refract; choose: one, by Fresnel
   Fresnel fresnel = Fresnel::Exact;
   Strategy strategy = Strategy::Mis;  // at Phong object hits
   int branches = 1;                   // children of a Phong object hit
-  int maxDepth = 64;                  // a safety cap; Russian roulette ends paths first
+  // With diffuse walls, the light seen in a mirror from a Lambertian point: next-event
+  // estimation through the mirror (MirroredLight), or only the cosine-sampled rays that
+  // happen to find it.
+  MirrorLight mirrorLight = MirrorLight::Nee;
+  int maxDepth = 64;  // a safety cap; Russian roulette ends paths first
 };
 
 class MonteCarloIntegrator final : public Integrator {
@@ -35,6 +41,13 @@ class MonteCarloIntegrator final : public Integrator {
   // refraction out of the rim after internal reflections carries 1 - F << 1 toward the
   // light and was killed, or multiplied up, at random (see BENCHMARKS.md, "samplers").
   static constexpr double kRouletteThreshold = 0.25;
+  // With diffuse walls, a wall hit estimates the light seen in the mirrors with this
+  // probability, and divides by it: the estimate costs more than the rest of the wall's
+  // work (solving for the sphere's reflection point, two shadow segments per image) and
+  // its variance is small beside that of the paths it replaces. At equal time (6.8 s,
+  // the mirror scene at 256x256) relative MSE was 0.0123 at 0.02, 0.0117 at 0.05 and
+  // 0.1, 0.0141 at 0.25, 0.0172 at 0.5, 0.0223 at 1, against 0.036 without it.
+  static constexpr double kMirroredLightProbability = 0.1;
 
   // Throws std::invalid_argument if the scene has no area light.
   MonteCarloIntegrator(const Scene& scene, MonteCarloOptions options);
@@ -88,6 +101,7 @@ class MonteCarloIntegrator final : public Integrator {
     double pdf;
     RayKind kind;
     bool inside;
+    bool lightCounted;  // Ray::lightCounted
   };
 
   // The end of a ray that hit a terminal wall (`hit`, normal n facing the ray): its colour
@@ -110,6 +124,8 @@ class MonteCarloIntegrator final : public Integrator {
   const Scene& scene_;
   const Light& light_;
   MonteCarloOptions options_;
+  MirroredLight mirrored_;
+  bool useMirrored_;  // diffuse walls, MirrorLight::Nee, and mirrors in the scene
 };
 
 // Inline: the walls' hits, most of a render, take this path.

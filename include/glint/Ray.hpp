@@ -33,6 +33,10 @@ struct Ray {
   RayKind kind = RayKind::Camera;
   bool final = false;   // spawned no children: its colour is local light only
   bool inside = false;  // travels inside a transparent object
+  // Monte Carlo: the light this ray may reach was counted by next-event estimation
+  // already, so its emission counts 0: a diffuse ray's (at the wall it left), and the
+  // mirror reflection of a diffuse ray (MirroredLight, at that wall).
+  bool lightCounted = false;
 
   vec3 At(double t) const { return start + t * direction; }
 };

@@ -167,6 +167,9 @@ function query(sets = view.settings ? view.settings.settings.set : []) {
   for (const name of ['walls', 'strategy', 'branches', 'glass']) {
     if (mode === 'mc') q.append(name, form.elements[name].value);
   }
+  if (mode === 'mc' && form.elements.walls.value === 'diffuse') {
+    q.append('mirror-light', form.elements['mirror-light'].value);
+  }
   for (const name of ['fresnel', 'sampler', 'seed']) q.append(name, form.elements[name].value);
   if (sets.length === 0) q.append('set', '');  // none: the scene file as it is
   for (const s of sets) q.append('set', s);
@@ -189,6 +192,7 @@ function updateUrl() {
   if (s.mode === 'mc') {
     parts.push(`--walls ${s.walls}`, `--strategy ${s.strategy}`, `--branches ${s.branches}`,
                `--glass ${s.glass}`);
+    if (s.walls === 'diffuse') parts.push(`--mirror-light ${s['mirror-light']}`);
   }
   parts.push(`--fresnel ${s.fresnel}`, `--sampler ${s.sampler}`, `--seed ${s.seed}`);
   for (const set of s.set) parts.push(`--set '${set}'`);
@@ -219,11 +223,14 @@ async function send(q) {
   return true;
 }
 
+// A control means something in the modes its data-modes names: 'both', 'whitted', 'mc',
+// or 'mc-diffuse' (Monte Carlo with diffuse walls).
 function enableForMode() {
   const mode = form.elements.mode.value;
+  const current = mode === 'mc' && form.elements.walls.value === 'diffuse' ? [mode, 'mc-diffuse'] : [mode];
   for (const el of form.querySelectorAll('[data-modes]')) {
     const modes = el.dataset.modes;
-    el.disabled = !(modes === 'both' || modes === mode);
+    el.disabled = !(modes === 'both' || current.includes(modes));
     const row = el.closest('label, .tunable');
     if (row) row.classList.toggle('disabled', el.disabled);
   }
@@ -266,7 +273,8 @@ function showSettings(body) {
   view.settings = body;
   view.generation = body.generation;
   const s = body.settings;
-  for (const name of ['mode', 'walls', 'strategy', 'branches', 'glass', 'fresnel', 'sampler', 'seed']) {
+  for (const name of ['mode', 'walls', 'strategy', 'branches', 'glass', 'mirror-light', 'fresnel',
+                      'sampler', 'seed']) {
     form.elements[name].value = s[name];
   }
   if (rebuild) buildTunables(body.tunables);

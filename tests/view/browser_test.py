@@ -168,7 +168,7 @@ try:
     wait_for_generation_shown(browser, g + 1)
     time.sleep(0.5)
     whitted = shot(browser, "mode-whitted")
-    disabled = browser.eval("['walls', 'strategy', 'glass', 'branches'].every("
+    disabled = browser.eval("['walls', 'strategy', 'glass', 'branches', 'mirror-light'].every("
                             "(n) => document.querySelector(`[name=${n}]`).disabled)")
     check(disabled, "in Whitted mode the Monte Carlo switches are disabled")
     browser.open(server.url + "/?mode=mc")
@@ -178,6 +178,17 @@ try:
     check(diff(whitted, mc) > 5.0, f"?mode=whitted and ?mode=mc differ (mean {diff(whitted, mc):.1f} levels)")
     check(not browser.eval("document.querySelector('[name=walls]').disabled"),
           "in Monte Carlo mode they are enabled")
+    # The mirror light means something with diffuse walls only.
+    check(browser.eval("document.querySelector('[name=\"mirror-light\"]').disabled"),
+          "with terminal walls the mirror light is disabled")
+    browser.open(server.url + "/?mode=mc&walls=diffuse&mirror-light=brdf")
+    wait_for_generation_shown(browser, g + 3)
+    check(browser.eval("!document.querySelector('[name=\"mirror-light\"]').disabled && "
+                       "document.querySelector('[name=\"mirror-light\"]').value === 'brdf' && "
+                       "document.getElementById('command').textContent.includes("
+                       "'--walls diffuse') && document.getElementById('command').textContent"
+                       ".includes('--mirror-light brdf')"),
+          "with diffuse walls it is enabled, set from the URL, and in the command line")
 
     check(not browser.console, f"no errors in the page's console: {browser.console}")
 finally:

@@ -138,6 +138,8 @@ try:
         ("mode=mc&set=/objects/1/ior=0.5", ["--mode", "mc", "--set", "/objects/1/ior=0.5"]),
         ("mode=mc&set=/objects/9/ior=1.2", ["--mode", "mc", "--set", "/objects/9/ior=1.2"]),
         ("mode=whitted&walls=diffuse", ["--mode", "whitted", "--walls", "diffuse"]),
+        ("mode=mc&walls=terminal&mirror-light=brdf",
+         ["--mode", "mc", "--walls", "terminal", "--mirror-light", "brdf"]),
     ]:
         cli = subprocess.run([GLINT, "render", SCENE, "--size", "8", "-o", "/dev/null/x.png",
                               *flags], capture_output=True, text=True)

@@ -109,9 +109,8 @@ int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, std::u
             sampler.Get2D(i == 0 ? SampleDimension::Scatter(node)
                                  : SampleDimension::Extra(node, static_cast<std::uint32_t>(i)));
         const PhongSample s = SamplePhong(m, d, n, uv.u, uv.v);
-        out[i] = {s.direction, s.weight / static_cast<double>(k),
-                  k * s.pdf,   RayKind::Reflected,
-                  ray.inside,  false};
+        out[i] = {s.direction, s.weight / static_cast<double>(k), k * s.pdf, RayKind::Reflected,
+                  ray.inside};
       }
       return k;
     }
@@ -133,16 +132,16 @@ int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, std::u
       if (options_.glass == MonteCarloOptions::Glass::Choose) {
         // One child, reflection with probability F: weight F / F = (1 - F) / (1 - F) = 1.
         if (!refracted || sampler.Get1D(SampleDimension::Choice(node)) < f) {
-          out[0] = {mirror, Colour(1.0), 0.0, RayKind::Reflected, ray.inside, false};
+          out[0] = {mirror, Colour(1.0), 0.0, RayKind::Reflected, ray.inside};
         } else {
-          out[0] = {*refracted, Colour(1.0), 0.0, RayKind::Refracted, !ray.inside, false};
+          out[0] = {*refracted, Colour(1.0), 0.0, RayKind::Refracted, !ray.inside};
         }
         return 1;
       }
       int count = 0;
-      if (f > 0.0) out[count++] = {mirror, Colour(f), 0.0, RayKind::Reflected, ray.inside, false};
+      if (f > 0.0) out[count++] = {mirror, Colour(f), 0.0, RayKind::Reflected, ray.inside};
       if (refracted && f < 1.0) {
-        out[count++] = {*refracted, Colour(1.0 - f), 0.0, RayKind::Refracted, !ray.inside, false};
+        out[count++] = {*refracted, Colour(1.0 - f), 0.0, RayKind::Refracted, !ray.inside};
       }
       return count;
     }

@@ -3,7 +3,7 @@
 // a mirror sphere. With diffuse walls these caustics are otherwise found only when a
 // cosine-sampled ray happens to hit the mirror at the angle that shows the light: in
 // the mirror scene they held two thirds of the image's relative MSE (BENCHMARKS.md,
-// "Caustics through mirrors").
+// "The light seen in mirrors").
 //
 // One light point y (uniform, density 1/A) serves every mirror: the path x -> m -> y is
 // y's mirror image seen through a plane face (the face's point m on the segment from x

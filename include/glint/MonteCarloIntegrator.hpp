@@ -101,7 +101,7 @@ class MonteCarloIntegrator final : public Integrator {
     double pdf;
     RayKind kind;
     bool inside;
-    bool lightCounted;  // Ray::lightCounted
+    bool lightCounted = false;  // Ray::lightCounted
   };
 
   // The end of a ray that hit a terminal wall (`hit`, normal n facing the ray): its colour

@@ -41,8 +41,9 @@ struct SampleDimension {
   static constexpr std::uint32_t Extra(std::uint32_t node, std::uint32_t branch) {
     return (1U << 24U) + 4 * (64 * node + branch);
   }
-  // A Lambertian node's light point for the light seen in mirrors (MirroredLight):
-  // Lambertian nodes have no Phong branches, so it takes a second branch's dimensions.
+  // A Lambertian node's light seen in mirrors (MirroredLight): its light point (+0, +1)
+  // and whether to estimate it at all (+2). Lambertian nodes have no Phong branches, so
+  // it takes a second branch's dimensions.
   static constexpr std::uint32_t MirroredLight(std::uint32_t node) { return Extra(node, 1); }
 };
 

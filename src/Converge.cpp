@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -56,29 +57,27 @@ std::vector<Variant> ParseVariants(const ConvergeArgs& a) {
     Variant v{key + "=" + value, a.render};
     if (key != "fresnel" && key != "sampler")
       v.args.monteCarloSwitches.push_back("--compare " + key);
-    const auto allow = [&](std::initializer_list<const char*> ok) {
-      for (const char* o : ok) {
-        if (value == o) return;
-      }
+    const auto allow = [&](const std::vector<std::string>& ok) {
+      if (std::find(ok.begin(), ok.end(), value) != ok.end()) return;
       throw InputError("--compare " + a.compare + ": '" + value + "' is not a value of " + key);
     };
     if (key == "strategy") {
-      allow({"mis", "light", "brdf"});
+      allow(kStrategies);
       v.args.strategy = value;
     } else if (key == "glass") {
-      allow({"split", "choose"});
+      allow(kGlassModes);
       v.args.glass = value;
     } else if (key == "fresnel") {
-      allow({"exact", "small-angle"});
+      allow(kFresnelModels);
       v.args.fresnel = value;
     } else if (key == "walls") {
-      allow({"terminal", "diffuse"});
+      allow(kWallModes);
       v.args.walls = value;
     } else if (key == "sampler") {
-      allow({"random", "stratified", "sobol"});
+      allow(kSamplers);
       v.args.sampler = value;
     } else if (key == "mirror-light") {
-      allow({"nee", "brdf"});
+      allow(kMirrorLightModes);
       v.args.mirrorLight = value;
     } else if (key == "branches") {
       const int b = std::atoi(value.c_str());

@@ -25,6 +25,20 @@ inline double PolygonCosineIntegral(vec3 p, vec3 n, const std::vector<vec3>& ver
   return 0.5 * std::abs(sum);
 }
 
+// One render of a small square image with the sampler `kind` (no NaN or Inf sample).
+inline Image RenderWithSampler(const Scene& scene, const Integrator& integrator, SamplerKind kind,
+                               int size, int spp, std::uint64_t seed, int threads = 0) {
+  Camera camera(scene.wall, scene.camera.eye, size, size);
+  RenderOptions options;
+  options.sampler = kind;
+  options.raysPerPixel = spp;
+  options.seed = seed;
+  options.threads = threads;
+  const RenderStats stats = camera.Render(integrator, options);
+  EXPECT_EQ(stats.nonFiniteSamples, 0U);
+  return camera.ToImage();
+}
+
 // Block means of `runs` independent renders (different seeds) of a small image.
 struct BlockEstimates {
   std::vector<MeanAndError> blocks;  // block-major, 3 channels each

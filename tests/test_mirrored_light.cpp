@@ -19,6 +19,7 @@ namespace {
 
 using testing::MeanAndError;
 using testing::PolygonCosineIntegral;
+using testing::RenderWithSampler;
 using testing::SourcePath;
 
 Scene MirrorScene(const std::vector<std::string>& overrides = {}) {
@@ -122,17 +123,6 @@ TEST(MirroredLight, AgreesWithCosineRaysThatFindTheLightInAMirror) {
   }
 }
 
-Image Render(const Scene& scene, const MonteCarloIntegrator& integrator, int size, int spp,
-             std::uint64_t seed) {
-  Camera camera(scene.wall, scene.camera.eye, size, size);
-  RenderOptions options;
-  options.raysPerPixel = spp;
-  options.seed = seed;
-  const RenderStats stats = camera.Render(integrator, options);
-  EXPECT_EQ(stats.nonFiniteSamples, 0U);
-  return camera.ToImage();
-}
-
 // The relative variance of one image's pixels, from two independent renders a and b:
 // the mean of (a - b)^2 / 2 / (r^2 + 0.01), r the mean of the images given, as relative
 // MSE weighs errors (the light's own pixels would swamp a plain variance).
@@ -160,10 +150,10 @@ TEST(MirroredLight, ImagesWithAndWithoutItAgreeBlockByBlockAndItsNoiseIsLower) {
   brdf.mirrorLight = MonteCarloOptions::MirrorLight::Brdf;
   const MonteCarloIntegrator withNee(scene, nee);
   const MonteCarloIntegrator withoutNee(scene, brdf);
-  const Image a = Render(scene, withNee, 64, 64, 21);
-  const Image b = Render(scene, withNee, 64, 64, 22);
-  const Image r1 = Render(scene, withoutNee, 64, 64, 11);
-  const Image r2 = Render(scene, withoutNee, 64, 64, 12);
+  const Image a = RenderWithSampler(scene, withNee, SamplerKind::Random, 64, 64, 21);
+  const Image b = RenderWithSampler(scene, withNee, SamplerKind::Random, 64, 64, 22);
+  const Image r1 = RenderWithSampler(scene, withoutNee, SamplerKind::Random, 64, 64, 11);
+  const Image r2 = RenderWithSampler(scene, withoutNee, SamplerKind::Random, 64, 64, 12);
   const BiasVerdict v = TestBias(a, b, r1, &r2);
   const std::vector<const Image*> all = {&a, &b, &r1, &r2};
   const double ratio = RelativeNoise(r1, r2, all) / RelativeNoise(a, b, all);

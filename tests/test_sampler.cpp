@@ -27,6 +27,7 @@ using testing::CanonicalScene;
 using testing::ChiSquare;
 using testing::MeanAndError;
 using testing::PolygonCosineIntegral;
+using testing::RenderWithSampler;
 using testing::SidakAlpha;
 
 constexpr SamplerKind kKinds[] = {SamplerKind::Random, SamplerKind::Stratified, SamplerKind::Sobol};
@@ -303,19 +304,6 @@ TEST(Sampler, EverySamplerIsUnbiasedForLambertsFormula) {
   }
 }
 
-Image Render(const Scene& scene, const Integrator& integrator, SamplerKind kind, int size, int spp,
-             std::uint64_t seed, int threads = 0) {
-  Camera camera(scene.wall, scene.camera.eye, size, size);
-  RenderOptions options;
-  options.sampler = kind;
-  options.raysPerPixel = spp;
-  options.seed = seed;
-  options.threads = threads;
-  const RenderStats stats = camera.Render(integrator, options);
-  EXPECT_EQ(stats.nonFiniteSamples, 0U);
-  return camera.ToImage();
-}
-
 TEST(Sampler, ImagesOfTheThreeSamplersAgreeBlockByBlock) {
   const Scene scene = CanonicalScene();
   MonteCarloOptions diffuse;
@@ -326,11 +314,11 @@ TEST(Sampler, ImagesOfTheThreeSamplersAgreeBlockByBlock) {
   const Integrator* integrators[] = {&terminal, &global, &whitted};
   const char* names[] = {"mc terminal", "mc diffuse", "whitted"};
   for (int k = 0; k < 3; ++k) {
-    const Image r1 = Render(scene, *integrators[k], SamplerKind::Random, 64, 32, 11);
-    const Image r2 = Render(scene, *integrators[k], SamplerKind::Random, 64, 32, 12);
+    const Image r1 = RenderWithSampler(scene, *integrators[k], SamplerKind::Random, 64, 32, 11);
+    const Image r2 = RenderWithSampler(scene, *integrators[k], SamplerKind::Random, 64, 32, 12);
     for (const SamplerKind kind : {SamplerKind::Stratified, SamplerKind::Sobol}) {
-      const Image a = Render(scene, *integrators[k], kind, 64, 32, 21);
-      const Image b = Render(scene, *integrators[k], kind, 64, 32, 22);
+      const Image a = RenderWithSampler(scene, *integrators[k], kind, 64, 32, 21);
+      const Image b = RenderWithSampler(scene, *integrators[k], kind, 64, 32, 22);
       const BiasVerdict v = TestBias(a, b, r1, &r2);
       std::printf("%s, %s against random: mean ratio %.5f (z %+.2f), max block z %.2f\n", names[k],
                   SamplerName(kind), v.meanRatio, v.meanZ, v.maxBlockZ);
@@ -353,8 +341,8 @@ TEST(Sampler, NeighbouringPixelsNoiseIsUncorrelated) {
   constexpr int kHi = 88;
   const int lags[][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}, {2, 0}, {0, 2}, {3, 0}};
   for (const SamplerKind kind : kKinds) {
-    const Image a = Render(scene, integrator, kind, kSize, 4, 5);
-    const Image b = Render(scene, integrator, kind, kSize, 4, 6);
+    const Image a = RenderWithSampler(scene, integrator, kind, kSize, 4, 5);
+    const Image b = RenderWithSampler(scene, integrator, kind, kSize, 4, 6);
     std::vector<double> d(static_cast<std::size_t>(kSize * kSize), 0.0);
     for (int y = kLo; y < kHi; ++y) {
       for (int x = kLo; x < kHi; ++x) {
@@ -406,7 +394,7 @@ TEST(Sampler, SobolPassesContinueOneSequenceAndImagesDoNotDependOnThreads) {
     camera.Render(integrator, options);
     return camera.ToImage();
   };
-  const Image one = Render(scene, integrator, SamplerKind::Sobol, 16, 16, 1);
+  const Image one = RenderWithSampler(scene, integrator, SamplerKind::Sobol, 16, 16, 1);
   const Image two = twoPasses(SamplerKind::Sobol);
   double largest = 0.0;
   for (int y = 0; y < 16; ++y) {
@@ -416,8 +404,8 @@ TEST(Sampler, SobolPassesContinueOneSequenceAndImagesDoNotDependOnThreads) {
   }
   EXPECT_LT(largest, 1e-12);  // the same 16 samples, summed in two parts
   for (const SamplerKind kind : kKinds) {
-    const Image t1 = Render(scene, integrator, kind, 32, 8, 3, 1);
-    const Image t2 = Render(scene, integrator, kind, 32, 8, 3, 2);
+    const Image t1 = RenderWithSampler(scene, integrator, kind, 32, 8, 3, 1);
+    const Image t2 = RenderWithSampler(scene, integrator, kind, 32, 8, 3, 2);
     EXPECT_EQ(t1.Pixels(), t2.Pixels()) << SamplerName(kind);
   }
 }

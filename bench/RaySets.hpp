@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "glint/Camera.hpp"
-#include "glint/Rng.hpp"
-#include "glint/Sampling.hpp"
-#include "glint/Scene.hpp"
-#include "glint/SceneLoader.hpp"
+#include "glint/camera/Camera.hpp"
+#include "glint/sampling/Rng.hpp"
+#include "glint/sampling/Sampling.hpp"
+#include "glint/scene/Scene.hpp"
+#include "glint/scene/SceneLoader.hpp"
 
 namespace glint::bench {
 

@@ -4,9 +4,9 @@
 #include <benchmark/benchmark.h>
 
 #include "RaySets.hpp"
-#include "glint/MonteCarloIntegrator.hpp"
-#include "glint/Pixel.hpp"
-#include "glint/WhittedIntegrator.hpp"
+#include "glint/camera/Pixel.hpp"
+#include "glint/transport/MonteCarloIntegrator.hpp"
+#include "glint/transport/WhittedIntegrator.hpp"
 
 namespace glint::bench {
 namespace {

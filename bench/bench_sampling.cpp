@@ -3,10 +3,10 @@
 #include <benchmark/benchmark.h>
 
 #include "RaySets.hpp"
-#include "glint/MirroredLight.hpp"
-#include "glint/Phong.hpp"
-#include "glint/Sampler.hpp"
-#include "glint/SphereReflection.hpp"
+#include "glint/sampling/Sampler.hpp"
+#include "glint/transport/MirroredLight.hpp"
+#include "glint/transport/Phong.hpp"
+#include "glint/transport/SphereReflection.hpp"
 
 namespace glint::bench {
 namespace {

@@ -1,0 +1,33 @@
+// A light-transport mode: given the root of a ray tree, it traces the ray, grows the
+// tree below it and returns the ray's colour (radiance toward the camera).
+#pragma once
+
+#include <cstdint>
+
+#include "glint/camera/PixelShaft.hpp"
+#include "glint/camera/RayTree.hpp"
+#include "glint/camera/RenderStats.hpp"
+#include "glint/core/Math.hpp"
+#include "glint/sampling/Sampler.hpp"
+
+namespace glint {
+
+class Integrator {
+ public:
+  Integrator() = default;
+  Integrator(const Integrator&) = delete;
+  Integrator& operator=(const Integrator&) = delete;
+  virtual ~Integrator() = default;
+
+  // Traces tree[root] (start, direction, importance set) and fills in its colour and
+  // its subtree. Returns the colour. `shaft` is what the pixel that shot the camera ray
+  // knows in advance (PixelShaft{} for any other ray: nothing). Its random decisions
+  // take their numbers from `sampler`, in the sample the pixel has started.
+  virtual Colour Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft, Sampler& sampler,
+                       RenderStats& stats) const = 0;
+
+  // The shadow rays it casts, for Camera::PrepareShafts.
+  virtual PixelShaft::Lights ShadowLights() const = 0;
+};
+
+}  // namespace glint

@@ -1,0 +1,78 @@
+// One pixel of the Camera: it shoots its rays through points inside itself (its sampler's),
+// has the integrator grow their ray trees, and keeps their equally weighted mean
+// (a box filter; each first ray has importance 1/N). A progressive render adds passes;
+// the pixel's radiance is the mean of all its finite samples.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+
+#include "glint/camera/Integrator.hpp"
+#include "glint/camera/PixelShaft.hpp"
+#include "glint/camera/RayTree.hpp"
+#include "glint/camera/RenderStats.hpp"
+#include "glint/core/Math.hpp"
+#include "glint/sampling/Sampler.hpp"
+
+namespace glint {
+
+class Camera;
+
+// What one pass of a pixel brought: the sum of its finite samples' colours, their number,
+// and whether the pass ran to its end (a cancel can cut it short).
+struct PixelPass {
+  Colour sum{0.0};
+  std::uint64_t samples = 0;
+  bool complete = true;
+};
+
+class Pixel {
+ public:
+  // Traces a pass of `rays` rays through pixel (x, y) and returns it, leaving the pixel as
+  // it was. The trees are built in `trees`; with keepTrees all of them are left there
+  // (for drawing), otherwise the storage is reused from one ray to the next so that
+  // memory does not grow with N. A NaN or Inf sample is counted and dropped.
+  // If `cancel` turns true the pass ends early with the rays traced so far.
+  PixelPass TracePass(const Camera& camera, int x, int y, int rays, const Integrator& integrator,
+                      Sampler& sampler, RayTree& trees, RenderStats& stats, bool keepTrees = false,
+                      const std::atomic<bool>* cancel = nullptr) const;
+  // Adds a pass: its sum to the pixel's, in pass order (so that a pass traced elsewhere,
+  // another thread or another process, gives the same bits). A complete pass counts.
+  void Add(const PixelPass& pass) {
+    sum_ += pass.sum;
+    samples_ += pass.samples;
+    passes_ += pass.complete ? 1U : 0U;
+  }
+  // TracePass, then Add.
+  void Render(const Camera& camera, int x, int y, int rays, const Integrator& integrator,
+              Sampler& sampler, RayTree& trees, RenderStats& stats, bool keepTrees = false,
+              const std::atomic<bool>* cancel = nullptr) {
+    Add(TracePass(camera, x, y, rays, integrator, sampler, trees, stats, keepTrees, cancel));
+  }
+
+  // What the pixel knows of its rays in advance (Camera::PrepareShafts); nothing until then.
+  void SetShaft(PixelShaft shaft) { shaft_ = shaft; }
+  PixelShaft Shaft() const { return shaft_; }
+
+  Colour Radiance() const { return samples_ > 0 ? sum_ / static_cast<double>(samples_) : sum_; }
+  std::uint64_t Samples() const { return samples_; }
+  Colour Sum() const { return sum_; }
+  // Complete passes added (a checkpoint's resume traces the others).
+  std::uint32_t Passes() const { return passes_; }
+  // Forgets the samples (not the shaft, which depends on the geometry only).
+  void Clear() { Restore(Colour(0.0), 0, 0); }
+  // The state a checkpoint saved.
+  void Restore(Colour sum, std::uint64_t samples, std::uint32_t passes) {
+    sum_ = sum;
+    samples_ = samples;
+    passes_ = passes;
+  }
+
+ private:
+  Colour sum_{0.0};  // sum of the finite samples' colours
+  std::uint64_t samples_ = 0;
+  std::uint32_t passes_ = 0;
+  PixelShaft shaft_;
+};
+
+}  // namespace glint

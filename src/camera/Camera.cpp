@@ -1,0 +1,177 @@
+#include "glint/camera/Camera.hpp"
+
+#if defined(_OPENMP)
+#include <omp.h>
+#endif
+
+#include <algorithm>
+#include <atomic>
+#include <stdexcept>
+
+#include "glint/image/ImageIO.hpp"
+#include "glint/scene/Scene.hpp"
+
+namespace glint {
+
+namespace {
+// OpenMP's queries, with a serial fallback for builds without OpenMP (the fuzzer's).
+int MaxThreads() {
+#if defined(_OPENMP)
+  return omp_get_max_threads();
+#else
+  return 1;
+#endif
+}
+int ThreadNumber() {
+#if defined(_OPENMP)
+  return omp_get_thread_num();
+#else
+  return 0;
+#endif
+}
+}  // namespace
+
+bool Camera::EyeOnAxis(const Wall& room, vec3 eye) {
+  const vec3 back = room.Centre() - vec3(0.0, 0.0, 0.5 * room.Size());
+  const double front = room.Position().z + room.Size();
+  const double tolerance = 1e-9 * std::max(1.0, room.Size());
+  return std::abs(eye.x - back.x) <= tolerance && std::abs(eye.y - back.y) <= tolerance &&
+         eye.z > front;
+}
+
+Camera::Camera(const Wall& room, vec3 eye, int width, int height)
+    : eye_(eye), width_(width), height_(height) {
+  if (width <= 0 || height <= 0) throw std::invalid_argument("image size must be positive");
+  if (!EyeOnAxis(room, eye)) {
+    throw std::invalid_argument(
+        "the eye must lie on the line through the centre of the back wall, in front of "
+        "the room's open side");
+  }
+  const vec3 back = room.Centre() - vec3(0.0, 0.0, 0.5 * room.Size());
+  const double front = room.Position().z + room.Size();
+  viewDirection_ = glm::normalize(back - eye);
+  // The set-up rule: the ray from the eye to a front corner, (c.x +- s/2, c.y +- s/2,
+  // front), must pass through the view plane's corner (+-halfWidth, +-halfHeight) at
+  // distance d. With the view plane the size of the room's cross-section, similar
+  // triangles give d = eye.z - front: the plane lies in the front opening.
+  viewPlaneDistance_ = eye.z - front;
+  halfHeight_ = 0.5 * room.Size();
+  // A non-square image keeps square pixels: the plane widens with the aspect ratio.
+  halfWidth_ = halfHeight_ * static_cast<double>(width) / static_cast<double>(height);
+  planeCentre_ = eye_ + viewPlaneDistance_ * viewDirection_;
+  pixelWidth_ = 2.0 * halfWidth_ / static_cast<double>(width);
+  pixelHeight_ = 2.0 * halfHeight_ / static_cast<double>(height);
+  pixels_.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+}
+
+vec3 Camera::ViewPlanePoint(double px, double py) const {
+  // Image x grows to the right (+x in the world), image y grows downward (-y).
+  // pixelWidth_ = 2 halfWidth / W, set once: no division per ray.
+  const double sx = px * pixelWidth_ - halfWidth_;
+  const double sy = halfHeight_ - py * pixelHeight_;
+  return planeCentre_ + vec3(sx, sy, 0.0);
+}
+
+vec3 Camera::DirectionThrough(double px, double py) const {
+  return glm::normalize(ViewPlanePoint(px, py) - eye_);
+}
+
+RenderStats Camera::RenderChunks(const Integrator& integrator, const RenderOptions& options,
+                                 int first, int last) {
+  const int count = width_ * height_;
+  std::atomic<std::size_t> done{static_cast<std::size_t>(first) * kChunk};
+  RenderStats total;
+  const int threads = options.threads > 0 ? options.threads : MaxThreads();
+  if (arenas_.size() < static_cast<std::size_t>(threads))
+    arenas_.resize(static_cast<std::size_t>(threads));
+#pragma omp parallel num_threads(threads)
+  {
+    RayTree& trees = arenas_[static_cast<std::size_t>(ThreadNumber())];  // reused for every pixel
+    RenderStats stats;
+    // Chunks of consecutive pixels, handed out dynamically: the progress counter and
+    // the cancel flag are touched once a chunk, not once a pixel.
+#pragma omp for schedule(dynamic, 1) nowait
+    for (int chunk = first; chunk < last; ++chunk) {
+      if (options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed)) continue;
+      const int end = std::min(count, (chunk + 1) * kChunk);
+      for (int i = chunk * kChunk; i < end; ++i) {
+        Pixel& pixel = pixels_[static_cast<std::size_t>(i)];
+        if (options.skipDone && pixel.Passes() > options.pass) continue;  // resumed: done
+        Sampler sampler(options.sampler, options.seed, static_cast<std::uint64_t>(i), options.pass,
+                        options.firstSample, options.raysPerPixel);
+        const PixelPass pass =
+            pixel.TracePass(*this, i % width_, i / width_, options.raysPerPixel, integrator,
+                            sampler, trees, stats, false, options.cancel);
+        if (pass.complete) {
+          pixel.Add(pass);
+        } else if (pass.samples > 0) {
+#pragma omp critical(glint_cut_short)
+          cutShort_.emplace_back(static_cast<std::size_t>(i), pass);
+        }
+      }
+      const std::size_t finished =
+          done.fetch_add(static_cast<std::size_t>(end - chunk * kChunk), std::memory_order_relaxed);
+      if (options.progress && ThreadNumber() == 0) {
+        options.progress(finished, static_cast<std::size_t>(count));
+      }
+    }
+#pragma omp critical(glint_render_stats)
+    total += stats;
+  }
+  if (options.progress) {
+    options.progress(std::min(static_cast<std::size_t>(count),
+                              static_cast<std::size_t>(last) * static_cast<std::size_t>(kChunk)),
+                     static_cast<std::size_t>(count));
+  }
+  return total;
+}
+
+void Camera::PrepareShafts(const Scene& scene, PixelShaft::Lights lights, int threads) {
+  // Blocks of 4 x 4 pixels first: a block whose shaft is clear passes that on to all
+  // its pixels (their shafts lie inside it); in the others each pixel works out what
+  // its block did not know. (Measured: quadtrees from 8 or 16 pixels were no faster.)
+  constexpr int kBlock = 4;
+  const int columns = (width_ + kBlock - 1) / kBlock;
+  const int blocks = columns * ((height_ + kBlock - 1) / kBlock);
+#pragma omp parallel for schedule(dynamic, 16) num_threads(threads > 0 ? threads : MaxThreads())
+  for (int b = 0; b < blocks; ++b) {
+    const int x0 = (b % columns) * kBlock;
+    const int y0 = (b / columns) * kBlock;
+    const int x1 = std::min(width_, x0 + kBlock);
+    const int y1 = std::min(height_, y0 + kBlock);
+    const PixelShaft block = PixelShaft::Compute(scene, *this, lights, x0, y0, x1, y1, {});
+    const bool clear = block.Clear(scene, lights);
+    for (int y = y0; y < y1; ++y) {
+      for (int x = x0; x < x1; ++x) {
+        pixels_[Index(x, y)].SetShaft(
+            clear ? block : PixelShaft::Compute(scene, *this, lights, x, y, x + 1, y + 1, block));
+      }
+    }
+  }
+}
+
+void Camera::Clear() {
+  for (Pixel& p : pixels_) p.Clear();
+  cutShort_.clear();
+}
+
+Image Camera::ToImage(int threads) const {
+  Image image(width_, height_);
+#pragma omp parallel for num_threads(std::max(threads, 1)) schedule(static)
+  for (int y = 0; y < height_; ++y) {
+    for (int x = 0; x < width_; ++x) image.At(x, y) = PixelAt(x, y).Radiance();
+  }
+  for (const auto& [i, pass] : cutShort_) {
+    Pixel p = pixels_[i];
+    p.Add(pass);
+    image.At(static_cast<int>(i % static_cast<std::size_t>(width_)),
+             static_cast<int>(i / static_cast<std::size_t>(width_))) = p.Radiance();
+  }
+  return image;
+}
+
+void Camera::Save(const std::string& path, double exposure) const {
+  WriteImage(ToImage(), path, exposure);
+}
+
+}  // namespace glint

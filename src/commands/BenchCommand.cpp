@@ -1,0 +1,192 @@
+#include "commands/BenchCommand.hpp"
+
+#include <chrono>
+#include <cstdio>
+
+#include "cli/Cli.hpp"
+#include "glint/image/ImageIO.hpp"
+#include "job/Cluster.hpp"
+#include "nlohmann/json.hpp"
+
+namespace glint {
+
+namespace {
+
+struct Row {
+  std::string mode;
+  int spp = 0;
+  int threads = 0;
+  double seconds = 0.0;  // the best of the runs
+  RenderStats stats;
+};
+
+// The render a row measures: the bench's scene, size and sampler in one mode.
+RenderArgs RowArgs(const BenchArgs& args, const std::string& mode, int threads) {
+  RenderArgs r;
+  r.scene = args.scene;
+  r.mode = mode;
+  r.size = args.size;
+  r.threads = threads;
+  r.spp = mode == "mc" ? args.mcSpp : args.whittedSpp;
+  r.sampler = args.sampler;
+  return r;
+}
+
+// The best of `repeat` timed renders of one pass (the camera is warmed up first, so
+// that the per-thread arenas exist before the clock starts).
+Row Measure(const BenchArgs& args, const std::string& mode, int threads) {
+  const RenderArgs r = RowArgs(args, mode, threads);
+  const RenderSetup s = Prepare(r, false);
+  Camera camera(s.scene.wall, s.scene.camera.eye, s.width, s.height);
+  const std::unique_ptr<Integrator> integrator = MakeIntegrator(r, s);
+  RenderOptions options;
+  options.sampler = SamplerFromArgs(r);
+  options.threads = threads;
+  options.raysPerPixel = 1;
+  camera.Render(*integrator, options);  // warm-up: arenas, caches, page faults
+  options.raysPerPixel = s.raysPerPass;
+  Row row{mode, s.raysPerPass, threads, 0.0, {}};
+  for (int i = 0; i < args.repeat; ++i) {
+    camera.Clear();
+    const auto start = std::chrono::steady_clock::now();
+    PrepareShaftsIfTheyPay(camera, *integrator, s, false);  // as glint render does, on the clock
+    const RenderStats stats = camera.Render(*integrator, options);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (i == 0 || seconds < row.seconds) {
+      row.seconds = seconds;
+      row.stats = stats;
+    }
+  }
+  return row;
+}
+
+std::string ToJson(const BenchArgs& args, const std::vector<Row>& rows) {
+  nlohmann::json j;
+  j["scene"] = args.scene;
+  j["size"] = args.size;
+  j["repeat"] = args.repeat;
+  j["peak_rss_mib"] = PeakResidentMiB();
+  for (const Row& row : rows) {
+    const double rays = static_cast<double>(row.stats.TracedRays());
+    j["runs"].push_back({{"mode", row.mode},
+                         {"spp", row.spp},
+                         {"threads", row.threads},
+                         {"seconds", row.seconds},
+                         {"sampler", args.sampler},
+                         {"rays_traced", row.stats.TracedRays()},
+                         {"visibility_answered_without_a_ray", row.stats.shadowRaysByShaft},
+                         {"camera_paths", row.stats.cameraRays},
+                         {"mrays_per_second", rays / row.seconds / 1e6},
+                         {"mrays_per_second_per_thread", rays / row.seconds / 1e6 / row.threads}});
+  }
+  return j.dump(2) + "\n";
+}
+
+// Under MPI: one rank with one thread, then every rank with one thread each, the pass
+// spread over them as glint render spreads it; the speedup and the communication.
+int RunBenchRanks(const BenchArgs& args, const Cluster& cluster) {
+  if (cluster.Root()) {
+    std::printf("glint bench: %s, %s pixels, best of %d run%s, one thread per rank\n",
+                args.scene.c_str(), args.size.c_str(), args.repeat, args.repeat == 1 ? "" : "s");
+    std::printf("%-8s %5s %6s %9s %9s %12s %8s %9s %11s\n", "mode", "spp", "ranks", "seconds",
+                "Mrays/s", "Mrays/s/rank", "speedup", "messages", "bytes");
+  }
+  for (const std::string& mode : args.modes) {
+    Row one;
+    if (cluster.Root()) one = Measure(args, mode, 1);
+    const RenderArgs r = RowArgs(args, mode, 1);
+    const RenderSetup s = Prepare(r, false);
+    Camera camera(s.scene.wall, s.scene.camera.eye, s.width, s.height);
+    const std::unique_ptr<Integrator> integrator = MakeIntegrator(r, s);
+    RenderOptions options;
+    options.sampler = SamplerFromArgs(r);
+    options.threads = 1;
+    options.raysPerPixel = 1;
+    camera.Render(*integrator, options);  // warm-up on every rank
+    options.raysPerPixel = s.raysPerPass;
+    double best = 0.0;
+    RenderStats bestStats;
+    std::uint64_t messages = 0;
+    std::uint64_t bytes = 0;
+    for (int i = 0; i < args.repeat; ++i) {
+      camera.Clear();
+      cluster.Barrier();
+      const std::uint64_t m0 = cluster.MessagesSent();
+      const std::uint64_t b0 = cluster.BytesSent();
+      const auto start = std::chrono::steady_clock::now();
+      PrepareShaftsIfTheyPay(camera, *integrator, s, false);
+      RenderStats stats;
+      cluster.RenderPass(camera, *integrator, options, stats, {});
+      cluster.Barrier();
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      // Rank 0's own messages and bytes; the other ranks' are added below.
+      const std::uint64_t m = cluster.MessagesSent() - m0;
+      const std::uint64_t b = cluster.BytesSent() - b0;
+      if (i == 0 || seconds < best) {
+        best = seconds;
+        bestStats = stats;
+        messages = m;
+        bytes = b;
+      }
+    }
+    std::uint64_t all[2] = {messages, bytes};
+    cluster.SumOnRoot(all, 2);
+    if (cluster.Root()) {
+      const double rays = static_cast<double>(bestStats.TracedRays()) / best / 1e6;
+      std::printf("%-8s %5d %6d %9.3f %9.2f %12.2f %8s %9s %11s\n", mode.c_str(), one.spp, 1,
+                  one.seconds, static_cast<double>(one.stats.TracedRays()) / one.seconds / 1e6,
+                  static_cast<double>(one.stats.TracedRays()) / one.seconds / 1e6, "1.00", "0",
+                  "0");
+      std::printf("%-8s %5d %6d %9.3f %9.2f %12.2f %8.2f %9llu %11llu\n", mode.c_str(),
+                  s.raysPerPass, cluster.Size(), best, rays, rays / cluster.Size(),
+                  one.seconds / best, static_cast<unsigned long long>(all[0]),
+                  static_cast<unsigned long long>(all[1]));
+      std::fflush(stdout);
+    }
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+int RunBench(const BenchArgs& args, const Cluster& cluster) {
+  if (cluster.Distributed()) return RunBenchRanks(args, cluster);
+  if (!args.json.empty()) CheckWritable(args.json);
+  {  // a bad scene or size fails here, before the table starts
+    RenderArgs check;
+    check.scene = args.scene;
+    check.size = args.size;
+    Prepare(check, false);
+  }
+  const bool square = args.size.find_first_of("xX") == std::string::npos;
+  std::printf(
+      "glint bench: %s, %s%s%s pixels, best of %d run%s, seed 1, sampler %s; rays traced (a "
+      "shadow test a pixel's shaft answered is not a ray: 'shaft M/s')\n",
+      args.scene.c_str(), args.size.c_str(), square ? "x" : "", square ? args.size.c_str() : "",
+      args.repeat, args.repeat == 1 ? "" : "s", args.sampler.c_str());
+  std::printf("%-8s %5s %7s %9s %11s %9s %14s %8s %11s\n", "mode", "spp", "threads", "seconds",
+              "Mpaths/s", "Mrays/s", "Mrays/s/thread", "speedup", "shaft M/s");
+  std::vector<Row> rows;
+  for (const std::string& mode : args.modes) {
+    double first = 0.0;
+    for (const int threads : args.threads) {
+      const Row row = Measure(args, mode, threads);
+      if (first == 0.0) first = row.seconds;  // speedups are relative to the first count
+      const double rays = static_cast<double>(row.stats.TracedRays()) / row.seconds / 1e6;
+      std::printf("%-8s %5d %7d %9.3f %11.2f %9.2f %14.2f %8.2f %11.2f\n", mode.c_str(), row.spp,
+                  threads, row.seconds,
+                  static_cast<double>(row.stats.cameraRays) / row.seconds / 1e6, rays,
+                  rays / threads, first / row.seconds,
+                  static_cast<double>(row.stats.shadowRaysByShaft) / row.seconds / 1e6);
+      std::fflush(stdout);
+      rows.push_back(row);
+    }
+  }
+  std::printf("peak memory (resident): %.1f MiB\n", PeakResidentMiB());
+  if (!args.json.empty()) WriteFileAtomically(args.json, ToJson(args, rows));
+  return kExitOk;
+}
+
+}  // namespace glint

@@ -1,0 +1,266 @@
+#include "glint/transport/MonteCarloIntegrator.hpp"
+
+#include <stdexcept>
+
+#include "glint/sampling/Sampling.hpp"
+#include "glint/transport/Fresnel.hpp"
+#include "glint/transport/Phong.hpp"
+
+namespace glint {
+
+namespace {
+const Light& RequireLight(const Scene& scene) {
+  if (!scene.light)
+    throw std::invalid_argument("Monte Carlo mode needs an area_light in the scene");
+  return *scene.light;
+}
+}  // namespace
+
+MonteCarloIntegrator::MonteCarloIntegrator(const Scene& scene, MonteCarloOptions options)
+    : scene_(scene),
+      light_(RequireLight(scene)),
+      options_(options),
+      mirrored_(scene, light_),
+      useMirrored_(options.walls == MonteCarloOptions::Walls::Diffuse &&
+                   options.mirrorLight == MonteCarloOptions::MirrorLight::Nee &&
+                   !mirrored_.Empty()) {
+  if (options_.branches < 1 || options_.branches > kMaxBranches) {
+    throw std::invalid_argument("branches must be in [1, 64]");
+  }
+}
+
+Colour MonteCarloIntegrator::Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,
+                                   Sampler& sampler, RenderStats& stats) const {
+  if (shaft.roomOnly && options_.walls == MonteCarloOptions::Walls::Terminal) {
+    // Four camera rays in five: the pixel's shaft holds only the room, so the ray ends
+    // on a known wall and spawns nothing. None of TraceNode's machinery is needed.
+    Ray& ray = tree[root];
+    Hit hit;
+    scene_.IntersectRoom(ray.start, ray.direction, shaft.side, hit);
+    ray.end = hit.point;
+    ray.object = hit.object;
+    return EndAtTerminalWall(ray, hit, FacingNormal(ray.direction, hit.normal), 0, sampler, stats,
+                             shaft.areaLightVisible);
+  }
+  return TraceNode(tree, root, root, sampler, stats, shaft);
+}
+
+Colour MonteCarloIntegrator::EndAtTerminalWall(Ray& ray, const Hit& hit, vec3 n, std::uint32_t node,
+                                               Sampler& sampler, RenderStats& stats,
+                                               bool unoccluded) const {
+  const Colour colour = DirectLight(hit, ray.direction, n, 0.0,
+                                    sampler.Get2D(SampleDimension::Light(node)), stats, unoccluded);
+  ray.final = true;
+  ray.colour = colour;
+  return colour;
+}
+
+double MonteCarloIntegrator::EmissionWeight(const Ray& ray, vec3 lightPoint) const {
+  using Strategy = MonteCarloOptions::Strategy;
+  if (ray.lightCounted) return 0.0;  // next-event estimation counted it
+  if (ray.pdf == 0.0) return 1.0;    // camera, mirror and glass directions: nothing else sees it
+  switch (options_.strategy) {
+    case Strategy::Light:
+      return 0.0;
+    case Strategy::Brdf:
+      return 1.0;
+    case Strategy::Mis:
+      break;
+  }
+  return PowerHeuristic(ray.pdf, light_.PdfLi(ray.start, lightPoint));
+}
+
+Colour MonteCarloIntegrator::DirectLightPhong(const Hit& hit, vec3 d, vec3 n, double misBranches,
+                                              double u, double v, RenderStats& stats,
+                                              bool unoccluded) const {
+  const Material& m = *hit.material;
+  const LightSample ls = light_.SampleLi(hit.point, u, v);
+  const double cosTheta = glm::dot(n, ls.wi);
+  if (ls.invPdf == 0.0 || cosTheta <= 0.0) return Colour(0.0);
+  const PhongValue phong = EvaluatePhong(m, d, n, ls.wi);
+  const Colour f = phong.f;
+  if (f == Colour(0.0)) return Colour(0.0);
+  if (ShadowBlocked(hit.point, n, ls.wi, ls.point, unoccluded, stats)) return Colour(0.0);
+  double w = 1.0;
+  if (misBranches > 0.0) {  // MIS against `misBranches` BRDF samples
+    w = PowerHeuristic(ls.pdf, misBranches * phong.pdf);
+  }
+  return w * ls.Le * f * (cosTheta * ls.invPdf);
+}
+
+int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, std::uint32_t node,
+                                  Sampler& sampler, Candidate* out) const {
+  const Material& m = *hit.material;
+  const vec3 d = ray.direction;
+  switch (m.type) {
+    case MaterialType::Lambertian: {
+      if (options_.walls == MonteCarloOptions::Walls::Terminal) return 0;
+      // Cosine sampling: f cos / p = (rho / pi) cos / (cos / pi) = rho.
+      const Sample2 uv = sampler.Get2D(SampleDimension::Scatter(node));
+      const vec3 w = Frame::FromZ(n).ToWorld(SampleCosineHemisphere(uv.u, uv.v));
+      // The light it may reach: counted by next-event estimation at this wall.
+      out[0] = {glm::normalize(w), m.reflectance, 0.0, RayKind::Diffuse, ray.inside, true};
+      return 1;
+    }
+    case MaterialType::Phong: {
+      const int k = options_.branches;
+      for (int i = 0; i < k; ++i) {
+        const Sample2 uv =
+            sampler.Get2D(i == 0 ? SampleDimension::Scatter(node)
+                                 : SampleDimension::Extra(node, static_cast<std::uint32_t>(i)));
+        const PhongSample s = SamplePhong(m, d, n, uv.u, uv.v);
+        out[i] = {s.direction, s.weight / static_cast<double>(k), k * s.pdf, RayKind::Reflected,
+                  ray.inside};
+      }
+      return k;
+    }
+    case MaterialType::Mirror: {
+      // A perfect mirror reflects rho at every angle (spec, "Objects"), as Whitted's
+      // mirror and Cycles' sharp Glossy BSDF do. (The normalised Phong lobe's n -> infinity
+      // limit is not this mirror: its albedo tends to rho cos(theta).)
+      // The light it reaches after a diffuse ray: MirroredLight counted it at that ray's wall.
+      const vec3 r = glm::normalize(Reflect(d, n));
+      const bool counted = useMirrored_ && ray.kind == RayKind::Diffuse;
+      out[0] = {r, m.reflectance, 0.0, RayKind::Reflected, ray.inside, counted};
+      return 1;
+    }
+    case MaterialType::Glass: {
+      const vec3 mirror = glm::normalize(Reflect(d, hit.normal));
+      const DielectricInterface glass = CrossDielectric(d, hit.normal, m.ior);
+      const std::optional<vec3>& refracted = glass.refracted;
+      const double f = GlassReflectance(glass, m.ior, options_.fresnel);
+      if (options_.glass == MonteCarloOptions::Glass::Choose) {
+        // One child, reflection with probability F: weight F / F = (1 - F) / (1 - F) = 1.
+        if (!refracted || sampler.Get1D(SampleDimension::Choice(node)) < f) {
+          out[0] = {mirror, Colour(1.0), 0.0, RayKind::Reflected, ray.inside};
+        } else {
+          out[0] = {*refracted, Colour(1.0), 0.0, RayKind::Refracted, !ray.inside};
+        }
+        return 1;
+      }
+      int count = 0;
+      if (f > 0.0) out[count++] = {mirror, Colour(f), 0.0, RayKind::Reflected, ray.inside};
+      if (refracted && f < 1.0) {
+        out[count++] = {*refracted, Colour(1.0 - f), 0.0, RayKind::Refracted, !ray.inside};
+      }
+      return count;
+    }
+  }
+  return 0;
+}
+
+Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::uint32_t root,
+                                       Sampler& sampler, RenderStats& stats,
+                                       PixelShaft shaft) const {
+  // A reference, not a copy (copying the node cost ~10% of the render): valid until
+  // AddChildren below may move the nodes; what is needed after that is read first.
+  const Ray& ray = tree[index];
+  const std::uint32_t node = index - root;  // its number in the tree: its dimensions
+  Hit hit;
+  if (shaft.roomOnly) {
+    scene_.IntersectRoom(ray.start, ray.direction, shaft.side, hit);
+  } else if (!scene_.Intersect(ray.start, ray.direction, hit, /*withAreaLight=*/true)) {
+    tree[index].end = ray.start;
+    tree[index].final = true;  // out through the open front: radiance 0
+    tree[index].colour = Colour(0.0);
+    return Colour(0.0);
+  }
+  tree[index].end = hit.point;
+  tree[index].object = hit.object;
+  if (hit.light) {  // the light emits and reflects nothing
+    const Colour c = EmissionWeight(ray, hit.point) * light_.Le(-ray.direction);
+    tree[index].final = true;
+    tree[index].colour = c;
+    return c;
+  }
+
+  const Material& m = *hit.material;
+  const vec3 n = FacingNormal(ray.direction, hit.normal);
+  Colour colour(0.0);
+  // Next-event estimation at walls (always) and Phong objects (unless BRDF-only).
+  using Strategy = MonteCarloOptions::Strategy;
+  if (m.type == MaterialType::Lambertian) {
+    // The design's terminal walls end most paths: no child, nothing else to do.
+    if (options_.walls == MonteCarloOptions::Walls::Terminal) {
+      return EndAtTerminalWall(tree[index], hit, n, node, sampler, stats, shaft.areaLightVisible);
+    }
+    colour += DirectLight(hit, ray.direction, n, 0.0, sampler.Get2D(SampleDimension::Light(node)),
+                          stats, shaft.areaLightVisible);
+    // And the light seen in the mirrors, estimated at a wall hit with probability
+    // kMirroredLightProbability (and divided by it).
+    if (useMirrored_ &&
+        sampler.Get1D(SampleDimension::MirroredLight(node) + 2) < kMirroredLightProbability) {
+      const Sample2 uv = sampler.Get2D(SampleDimension::MirroredLight(node));
+      colour += m.reflectance * (kInvPi / kMirroredLightProbability) *
+                mirrored_.Irradiance(hit.point, n, uv.u, uv.v, stats);
+    }
+  } else if (m.type == MaterialType::Phong && options_.strategy != Strategy::Brdf) {
+    const double misBranches =
+        options_.strategy == Strategy::Mis ? static_cast<double>(options_.branches) : 0.0;
+    colour += DirectLight(hit, ray.direction, n, misBranches,
+                          sampler.Get2D(SampleDimension::Light(node)), stats);
+  }
+
+  // Read late: the node was written just before this call, and a load right after
+  // the store stalls (measured).
+  const Colour importance = ray.importance;
+  const int depth = ray.depth;
+  Candidate candidates[kMaxBranches];
+  int count = depth + 1 < options_.maxDepth ? Scatter(ray, hit, n, node, sampler, candidates) : 0;
+  // Russian roulette by throughput relative to the camera ray, whose importance is
+  // 1/N: survive with q = min(1, beta / kRouletteThreshold), then divide by q. (The root
+  // is read here, not before tracing: a load right after the store that wrote it stalls.)
+  const double rootImportance = count > 0 ? MaxComponent(tree[root].importance) : 0.0;
+  const double rootScale = rootImportance > 0.0 ? 1.0 / rootImportance : 1.0;
+  int kept = 0;
+  for (int i = 0; i < count; ++i) {
+    Candidate c = candidates[i];
+    const double beta = MaxComponent(importance * c.weight) * rootScale;
+    if (!(beta > 0.0)) continue;
+    const double q = beta * (1.0 / kRouletteThreshold);
+    if (q < 1.0) {
+      const std::uint32_t dimension =
+          i == 0 ? SampleDimension::Roulette(node)
+                 : SampleDimension::Extra(node, static_cast<std::uint32_t>(i)) + 2;
+      if (sampler.Get1D(dimension) >= q) continue;
+      c.weight /= q;
+    }
+    candidates[kept++] = c;
+  }
+  const std::uint32_t first =
+      kept > 0 ? tree.AddChildren(index, static_cast<std::uint32_t>(kept)) : 0;
+  for (int i = 0; i < kept; ++i) {
+    const Candidate& c = candidates[i];
+    Ray& child = tree[first + static_cast<std::uint32_t>(i)];
+    child.start = OffsetRayOrigin(hit.point, hit.normal, c.direction);  // to the side it leaves on
+    child.direction = c.direction;
+    child.weight = c.weight;
+    child.importance = importance * c.weight;
+    child.pdf = c.pdf;
+    child.kind = c.kind;
+    child.inside = c.inside;
+    child.lightCounted = c.lightCounted;
+    child.depth = static_cast<std::uint8_t>(depth + 1);
+    switch (c.kind) {
+      case RayKind::Refracted:
+        ++stats.refractedRays;
+        break;
+      case RayKind::Diffuse:
+        ++stats.diffuseRays;
+        break;
+      default:
+        ++stats.reflectedRays;
+        break;
+    }
+  }
+  for (int i = 0; i < kept; ++i) {
+    const std::uint32_t ci = first + static_cast<std::uint32_t>(i);
+    const Colour c = TraceNode(tree, ci, root, sampler, stats);
+    colour += tree[ci].weight * c;  // C_R = L_local + sum W_i C_i
+  }
+  tree[index].final = kept == 0;
+  tree[index].colour = colour;
+  return colour;
+}
+
+}  // namespace glint

@@ -1,0 +1,132 @@
+#include "glint/transport/WhittedIntegrator.hpp"
+
+#include "glint/sampling/Sampling.hpp"
+#include "glint/transport/Fresnel.hpp"
+
+namespace glint {
+
+WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth, FresnelModel fresnel)
+    : scene_(scene), maxDepth_(maxDepth), fresnel_(fresnel) {}
+
+Colour WhittedIntegrator::Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,
+                                Sampler& /*sampler*/, RenderStats& stats) const {
+  return TraceNode(tree, root, stats, shaft);
+}
+
+Colour WhittedIntegrator::LocalLight(const Hit& hit, vec3 d, RenderStats& stats,
+                                     PixelShaft shaft) const {
+  const Material& m = *hit.material;
+  // Light arrives on the side the ray came from.
+  const vec3 n = FacingNormal(d, hit.normal);
+  Colour sum(0.0);
+  for (std::size_t i = 0; i < scene_.pointLights.size(); ++i) {
+    const PointLight& light = scene_.pointLights[i];
+    vec3 l = light.position - hit.point;
+    const double r2 = glm::dot(l, l);
+    l /= std::sqrt(r2);
+    const double cosTheta = glm::dot(n, l);
+    if (cosTheta <= 0.0) continue;
+    ++stats.shadowRays;
+    if (shaft.PointLightVisible(static_cast<int>(i))) {
+      ++stats.shadowRaysByShaft;  // answered by the pixel's shaft: nothing opaque between
+    } else if (!scene_.VisibleThroughTransparent(OffsetRayOrigin(hit.point, n, l),
+                                                 light.position)) {
+      continue;
+    }
+    const Colour irradiance = light.intensity * (cosTheta / r2);  // E = I cos(theta) / r^2
+    double brdf = m.whittedDiffuse * kInvPi;
+    if (m.whittedSpecular > 0.0) {
+      const double cosR = std::max(0.0, glm::dot(Reflect(-l, n), -d));
+      brdf += m.whittedSpecular * (m.exponent + 2.0) / (2.0 * kPi) * CosinePower(cosR, m.exponent);
+    }
+    sum += m.reflectance * brdf * irradiance;
+  }
+  return sum;
+}
+
+std::uint32_t WhittedIntegrator::SpawnChildren(RayTree& tree, std::uint32_t index, const Hit& hit,
+                                               RenderStats& stats) const {
+  const Ray parent = tree[index];
+  const Material& m = *hit.material;
+  const double w = m.WhittedChildWeight();
+  if (w <= 0.0) return 0;
+  const vec3 d = parent.direction;
+
+  struct Child {
+    vec3 direction;
+    Colour weight;
+    RayKind kind;
+    bool inside;
+  };
+  Child children[2];
+  std::uint32_t count = 0;
+  const vec3 mirror = glm::normalize(Reflect(d, hit.normal));
+  if (m.IsTransparent()) {
+    // Fresnel split; F = 1 under total internal reflection. The index ratio flips for
+    // rays inside (CrossDielectric sees it from dot(d, n)).
+    const DielectricInterface glass = CrossDielectric(d, hit.normal, m.ior);
+    const std::optional<vec3>& refracted = glass.refracted;
+    const double f = GlassReflectance(glass, m.ior, fresnel_);  // 1 for total internal reflection
+    if (f > 0.0) children[count++] = {mirror, Colour(w * f), RayKind::Reflected, parent.inside};
+    if (refracted && f < 1.0) {
+      children[count++] = {*refracted, Colour(w * (1.0 - f)), RayKind::Refracted, !parent.inside};
+    }
+  } else {
+    // Opaque objects are perfect mirrors in Whitted mode, tinted by their reflectance.
+    children[count++] = {mirror, w * m.reflectance, RayKind::Reflected, parent.inside};
+  }
+
+  const std::uint32_t first = tree.AddChildren(index, count);
+  for (std::uint32_t i = 0; i < count; ++i) {
+    Ray& child = tree[first + i];
+    child.start = OffsetRayOrigin(hit.point, hit.normal, children[i].direction);
+    child.direction = children[i].direction;
+    child.weight = children[i].weight;
+    child.importance = parent.importance * children[i].weight;
+    child.kind = children[i].kind;
+    child.inside = children[i].inside;
+    child.depth = static_cast<std::uint8_t>(parent.depth + 1);
+    if (child.kind == RayKind::Refracted) {
+      ++stats.refractedRays;
+    } else {
+      ++stats.reflectedRays;
+    }
+  }
+  return count;
+}
+
+Colour WhittedIntegrator::TraceNode(RayTree& tree, std::uint32_t index, RenderStats& stats,
+                                    PixelShaft shaft) const {
+  const vec3 origin = tree[index].start;
+  const vec3 d = tree[index].direction;
+  Hit hit;
+  if (shaft.roomOnly) {
+    scene_.IntersectRoom(origin, d, shaft.side, hit);
+  } else if (!scene_.Intersect(origin, d, hit, /*withAreaLight=*/false)) {
+    // Left the room through the open front: radiance 0.
+    tree[index].final = true;
+    tree[index].end = origin;
+    tree[index].colour = Colour(0.0);
+    return Colour(0.0);
+  }
+  tree[index].end = hit.point;
+  tree[index].object = hit.object;
+
+  Colour colour = LocalLight(hit, d, stats, shaft);
+  // Walls spawn nothing; the depth limit counts ray iterations, the camera ray being
+  // the first.
+  std::uint32_t count = 0;
+  if (hit.material->type != MaterialType::Lambertian && tree[index].depth + 1 < maxDepth_) {
+    count = SpawnChildren(tree, index, hit, stats);
+  }
+  const std::uint32_t first = tree[index].firstChild;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const Colour c = TraceNode(tree, first + i, stats);
+    colour += tree[first + i].weight * c;  // C_R = L_local + sum W_i C_i
+  }
+  tree[index].final = count == 0;
+  tree[index].colour = colour;
+  return colour;
+}
+
+}  // namespace glint

@@ -32,11 +32,7 @@ int ThreadNumber() {
 }  // namespace
 
 bool Camera::EyeOnAxis(const Wall& room, vec3 eye) {
-  const vec3 back = room.Centre() - vec3(0.0, 0.0, 0.5 * room.Size());
-  const double front = room.Position().z + room.Size();
-  const double tolerance = 1e-9 * std::max(1.0, room.Size());
-  return std::abs(eye.x - back.x) <= tolerance && std::abs(eye.y - back.y) <= tolerance &&
-         eye.z > front;
+  return room.EyeOnAxis(eye);
 }
 
 Camera::Camera(const Wall& room, vec3 eye, int width, int height)

@@ -1,15 +1,9 @@
-// The command line: `glint render SCENE [options]`.
+// The command line: `glint render SCENE [options]` and the other commands.
 #pragma once
 
-namespace glint {
+#include "job/ExitCode.hpp"
 
-// Exit codes, also listed by --help and in the README.
-enum ExitCode : int {
-  kExitOk = 0,
-  kExitBadInput = 1,      // a bad scene file, override or command-line value
-  kExitOutputFailed = 2,  // an output file could not be written
-  kExitDisagree = 3,      // glint compare: the renders disagree with the reference
-};
+namespace glint {
 
 class Cluster;
 

@@ -3,9 +3,10 @@
 #include <chrono>
 #include <cstdio>
 
-#include "cli/Cli.hpp"
 #include "glint/image/ImageIO.hpp"
 #include "job/Cluster.hpp"
+#include "job/ExitCode.hpp"
+#include "job/RenderReport.hpp"
 #include "nlohmann/json.hpp"
 
 namespace glint {

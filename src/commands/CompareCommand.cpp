@@ -4,10 +4,10 @@
 #include <optional>
 #include <stdexcept>
 
-#include "cli/Cli.hpp"
 #include "glint/core/JsonReader.hpp"
 #include "glint/image/BiasTest.hpp"
 #include "glint/image/ImageIO.hpp"
+#include "job/ExitCode.hpp"
 
 namespace glint {
 

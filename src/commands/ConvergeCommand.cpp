@@ -8,12 +8,13 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "cli/Cli.hpp"
 #include "glint/camera/PassSchedule.hpp"
 #include "glint/core/JsonReader.hpp"
 #include "glint/image/ImageError.hpp"
 #include "glint/image/ImageIO.hpp"
+#include "job/ExitCode.hpp"
 #include "job/Interrupt.hpp"
+#include "job/PassLoop.hpp"
 
 namespace glint {
 
@@ -154,8 +155,8 @@ int RunConverge(const ConvergeArgs& a) {
     PrepareShaftsIfTheyPay(camera, *integrator, s, true);  // timed: part of the render's cost
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - prepared).count();
-    std::uint64_t spp = 0;
-    std::uint32_t pass = 0;
+    const Cluster single;  // this process alone
+    PassLoop loop(camera, *integrator, options, single);
     PassSchedule schedule(v.args.spp > 0 ? v.args.spp : 0);
     int rays = schedule.FirstRays();
     for (std::size_t k = 0; k < steps.size() && !interrupted.load(); ++k) {
@@ -163,19 +164,14 @@ int RunConverge(const ConvergeArgs& a) {
       // passes of --spp rays (default: 1, 2, 4, ... as the time left allows) until the
       // rung's time is reached.
       do {
-        options.raysPerPixel =
-            byTime ? rays : static_cast<int>(steps[k] - static_cast<double>(spp));
-        options.pass = pass++;
-        options.firstSample = spp;
-        const auto start = std::chrono::steady_clock::now();
-        camera.Render(*integrator, options);
-        const double passSeconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        seconds += passSeconds;
-        spp += static_cast<std::uint64_t>(options.raysPerPixel);
+        const PassLoop::Pass pass = loop.Render(
+            byTime ? rays : static_cast<int>(steps[k] - static_cast<double>(loop.Spp())));
+        loop.Count(pass);
+        seconds += pass.seconds;
         rays = std::max(schedule.FirstRays(),
-                        schedule.Next(options.raysPerPixel, passSeconds, steps[k] - seconds));
+                        schedule.Next(pass.rays, pass.seconds, steps[k] - seconds));
       } while (byTime && seconds < steps[k] && !interrupted.load());
+      const std::uint64_t spp = loop.Spp();
       const Row row{v.name, static_cast<int>(k), spp, seconds,
                     CompareImages(camera.ToImage(), reference)};
       rows.push_back(row);

@@ -9,6 +9,7 @@
 #include "glint/core/JsonReader.hpp"
 #include "glint/image/ImageError.hpp"
 #include "glint/scene/SceneLoader.hpp"
+#include "job/PassLoop.hpp"
 
 namespace glint {
 
@@ -107,7 +108,9 @@ void LiveRender::Loop() {
   using Clock = std::chrono::steady_clock;
   std::shared_ptr<const LiveJob> job;
   std::unique_ptr<Camera> camera;
-  LiveFrame progress;  // of the current job: counters and error history
+  std::unique_ptr<PassLoop> loop;
+  const Cluster single;  // this process alone
+  LiveFrame progress;    // of the current job: counters and error history
   Clock::time_point start;
   int rays = 1;
   while (!stop_) {
@@ -118,32 +121,30 @@ void LiveRender::Loop() {
       start = Clock::now();
       camera = std::make_unique<Camera>(s.scene.wall, s.scene.camera.eye, s.width, s.height);
       PrepareShaftsIfTheyPay(*camera, *job->integrator, s, /*manyPasses=*/true);
+      RenderOptions options;
+      options.seed = job->args.seed;
+      options.sampler = SamplerFromArgs(job->args);
+      options.threads = job->setup.threads;
+      options.cancel = &restart_;
+      loop = std::make_unique<PassLoop>(*camera, *job->integrator, options, single);
       progress = LiveFrame{};
       progress.generation = job->generation;
       rays = job->args.spp > 0 ? job->args.spp : 1;  // --spp: the rays of every pass
     }
-    RenderOptions options;
-    options.raysPerPixel = rays;
-    options.seed = job->args.seed;
-    options.sampler = SamplerFromArgs(job->args);
-    options.threads = job->setup.threads;
-    options.pass = progress.passes;
-    options.firstSample = progress.spp;
-    options.cancel = &restart_;
-    const Clock::time_point before = Clock::now();
-    const RenderStats stats = camera->Render(*job->integrator, options);
+    const PassLoop::Pass pass = loop->Render(rays);
     if (restart_) {  // new settings, or the end: the pass is dropped
       const auto all = static_cast<std::uint64_t>(job->setup.width) *
                        static_cast<std::uint64_t>(job->setup.height) *
                        static_cast<std::uint64_t>(rays);
-      abandoned_ += !stop_ && stats.cameraRays < all ? 1 : 0;  // it stopped half-way
+      abandoned_ += !stop_ && pass.stats.cameraRays < all ? 1 : 0;  // it stopped half-way
       job = nullptr;
       continue;
     }
-    const double passSeconds = std::chrono::duration<double>(Clock::now() - before).count();
-    ++progress.passes;
-    progress.spp += static_cast<std::uint64_t>(rays);
-    progress.raysTraced += stats.TracedRays();
+    loop->Count(pass);
+    const double passSeconds = pass.seconds;
+    progress.passes = loop->Passes();
+    progress.spp = loop->Spp();
+    progress.raysTraced += pass.stats.TracedRays();
     progress.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     auto frame = std::make_shared<LiveFrame>(progress);
     // In parallel: the render's threads would otherwise wait for it between passes (at

@@ -2,9 +2,9 @@
 
 #include <cstdio>
 
-#include "cli/Cli.hpp"
 #include "glint/core/JsonReader.hpp"
 #include "glint/image/ImageIO.hpp"
+#include "job/ExitCode.hpp"
 
 namespace glint {
 

@@ -1,4 +1,4 @@
-// The page of `glint view` (src/view/), compiled into the binary: the server has its
+// The page of `glint view` (src/commands/view/), compiled into the binary: the server has its
 // assets without reading any file, and works wherever glint is copied.
 #pragma once
 

@@ -14,13 +14,13 @@
 #include <filesystem>
 #include <thread>
 
-#include "cli/Cli.hpp"
 #include "commands/LiveRender.hpp"
 #include "commands/TreeCommand.hpp"
 #include "commands/ViewAssets.hpp"
 #include "commands/ViewSettings.hpp"
 #include "glint/core/JsonReader.hpp"
 #include "glint/image/ImageIO.hpp"
+#include "job/ExitCode.hpp"
 #include "job/Interrupt.hpp"
 
 namespace glint {

@@ -1,5 +1,5 @@
 // `glint view SCENE`: a local web page that shows the render refining, with the design's
-// studies as controls (src/view/ holds the page). The server (cpp-httplib) answers only
+// studies as controls (src/commands/view/ holds the page). The server (cpp-httplib) answers only
 // its own routes: the page's three assets and the /api/ calls below; no request reaches
 // the file system.
 #pragma once

@@ -1,79 +1,16 @@
-// What a render needs from the command line, checked before any time is spent, and the
-// loop of passes shared by `glint render` and `glint converge`.
+// The render job: the passes of one render (RunPasses), with its time budget,
+// checkpoints and resume, over this process's threads or an MPI job's ranks.
 #pragma once
 
-#include <memory>
-#include <string>
-#include <vector>
+#include <cstdint>
 
 #include "glint/camera/Camera.hpp"
 #include "glint/camera/Integrator.hpp"
-#include "glint/scene/Scene.hpp"
-#include "glint/transport/MonteCarloIntegrator.hpp"
+#include "glint/camera/RenderStats.hpp"
 #include "job/Cluster.hpp"
+#include "job/RenderSetup.hpp"
 
 namespace glint {
-
-struct RenderArgs {
-  std::string scene;
-  std::string mode = "whitted";
-  std::string size;
-  int spp = 0;
-  double timeBudget = 0.0;
-  int threads = 0;
-  std::uint64_t seed = 1;
-  double exposure = 0.0;
-  std::vector<std::string> outputs;
-  std::string statsPath;
-  std::vector<std::string> overrides;
-  bool quiet = false;
-  std::string walls = "terminal";
-  std::string glass = "split";
-  std::string fresnel = "exact";
-  std::string strategy = "mis";
-  int branches = 1;
-  std::string mirrorLight = "nee";
-  std::string sampler = "sobol";  // the equal-time study's winner (BENCHMARKS.md)
-  // The Monte Carlo switches given on the command line (--walls, ...): with --mode
-  // whitted they mean nothing, and Prepare refuses them.
-  std::vector<std::string> monteCarloSwitches;
-  // Checkpoints: save to `checkpoint` every `checkpointEvery` seconds and at an
-  // interrupt; continue the render saved in `resume`.
-  std::string checkpoint;
-  double checkpointEvery = 60.0;
-  std::string resume;
-  // The processes of the render (MPI ranks), or this one alone when null.
-  const Cluster* cluster = nullptr;
-};
-
-// The values each switch of a render takes: the command line and glint view's URL query
-// check them against the same lists.
-inline const std::vector<std::string> kModes = {"whitted", "mc"};
-inline const std::vector<std::string> kWallModes = {"terminal", "diffuse"};
-inline const std::vector<std::string> kGlassModes = {"split", "choose"};
-inline const std::vector<std::string> kFresnelModels = {"exact", "small-angle"};
-inline const std::vector<std::string> kStrategies = {"mis", "light", "brdf"};
-inline const std::vector<std::string> kMirrorLightModes = {"nee", "brdf"};
-inline const std::vector<std::string> kSamplers = {"random", "stratified", "sobol"};
-
-// The switches that mean something in Monte Carlo mode only.
-inline constexpr const char* kMonteCarloSwitches[] = {"--walls", "--branches", "--glass",
-                                                      "--strategy", "--mirror-light"};
-
-// The --sampler of the command line (checked by the parser).
-SamplerKind SamplerFromArgs(const RenderArgs& args);
-
-// Everything a render needs, checked before any time is spent rendering.
-struct RenderSetup {
-  Scene scene;
-  ModeSettings mode;
-  int width = 0;
-  int height = 0;
-  int raysPerPass = 1;  // 0: passes that double (PassSchedule), for --time without --spp
-  int threads = 1;
-  double exposure = 1.0;
-  std::vector<std::string> outputs;
-};
 
 struct RenderResult {
   RenderStats stats;
@@ -83,27 +20,8 @@ struct RenderResult {
   bool interrupted = false;
 };
 
-// Loads the scene, prints its warnings, and checks the size, memory and outputs; throws
-// InputError on bad input. With checkOutputs false, no output file is needed.
-RenderSetup Prepare(const RenderArgs& args, bool checkOutputs = true);
-// Refuses an output whose folder is missing or cannot take a new file.
-void CheckWritable(const std::string& path);
-std::unique_ptr<Integrator> MakeIntegrator(const RenderArgs& args, const RenderSetup& s);
-// Camera::PrepareShafts where it pays (PixelShaft::kPaysFromRaysPerPixel): for passes of
-// that many rays per pixel or more, and for `manyPasses` renders, which prepare once for
-// all their passes (--time, converge).
-void PrepareShaftsIfTheyPay(Camera& camera, const Integrator& integrator, const RenderSetup& s,
-                            bool manyPasses);
 // One pass, or passes until args.timeBudget would be overspent.
 RenderResult RunPasses(Camera& camera, const Integrator& integrator, const RenderArgs& args,
                        const RenderSetup& s);
-// The --stats JSON and the summary line.
-std::string StatsJson(const RenderArgs& args, const RenderSetup& s, const Camera& camera,
-                      const RenderResult& r);
-void PrintSummary(const RenderArgs& args, const RenderSetup& s, const RenderResult& r);
-// The process's peak resident memory so far (for --stats and glint bench).
-double PeakResidentMiB();
-// "dir/name.ext" -> "dir/name.partial.ext"
-std::string PartialPath(const std::string& path);
 
 }  // namespace glint

@@ -1,7 +1,5 @@
 #include "glint/scene/SceneLoader.hpp"
 
-#include "glint/camera/Camera.hpp"
-
 #include <fstream>
 #include <sstream>
 
@@ -299,7 +297,7 @@ Scene SceneFromJson(const nlohmann::json& document, const std::string& file) {
   const vec3 back = scene.wall.Centre() - vec3(0.0, 0.0, 0.5 * scene.wall.Size());
   const double front = scene.wall.Position().z + scene.wall.Size();
   const vec3 eye = scene.camera.eye;
-  if (!Camera::EyeOnAxis(scene.wall, eye)) {
+  if (!scene.wall.EyeOnAxis(eye)) {
     camera.Fail("eye",
                 "a point on the axis of the back wall in front of the room, (" +
                     std::to_string(back.x) + ", " + std::to_string(back.y) + ", z > " +

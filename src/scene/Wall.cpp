@@ -1,5 +1,8 @@
 #include "glint/scene/Wall.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace glint {
 
 Wall::Wall(vec3 position, double size, const std::array<Material, kSides>& materials,
@@ -39,6 +42,14 @@ void Wall::FillHit(vec3 origin, vec3 direction, double t, int side, Hit& hit) co
   hit.material = &materials_[side];
   hit.object = firstObject_ + side;
   hit.light = false;
+}
+
+bool Wall::EyeOnAxis(vec3 eye) const {
+  const vec3 back = Centre() - vec3(0.0, 0.0, 0.5 * size_);
+  const double front = position_.z + size_;
+  const double tolerance = 1e-9 * std::max(1.0, size_);
+  return std::abs(eye.x - back.x) <= tolerance && std::abs(eye.y - back.y) <= tolerance &&
+         eye.z > front;
 }
 
 }  // namespace glint

@@ -27,7 +27,7 @@ void WritePfm(const Image& image, const std::string& path);
 Image ReadPfm(const std::string& path);
 
 // OpenEXR: three 32-bit float channels R, G, B of linear radiance, ZIP-compressed
-// (src/ExrImage.cpp, through the OpenEXR library).
+// (src/image/ExrImage.cpp, through the OpenEXR library).
 std::string EncodeExr(const Image& image);
 Image ReadExr(const std::string& path);
 

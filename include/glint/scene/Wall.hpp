@@ -35,6 +35,9 @@ class Wall {
   vec3 Position() const { return position_; }
   double Size() const { return size_; }
   vec3 Centre() const { return position_ + vec3(0.5 * size_); }
+  // The first half of the camera's set-up rule: `eye` lies on the axis through the
+  // centre of the back wall, orthogonal to it, in front of the room's open side.
+  bool EyeOnAxis(vec3 eye) const;
   const Rectangle& Face(int side) const { return faces_[side]; }
   const Material& GetMaterial(int side) const { return materials_[side]; }
   // True if p lies inside the room (closed box).

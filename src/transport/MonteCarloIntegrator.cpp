@@ -27,6 +27,9 @@ MonteCarloIntegrator::MonteCarloIntegrator(const Scene& scene, MonteCarloOptions
   if (options_.branches < 1 || options_.branches > kMaxBranches) {
     throw std::invalid_argument("branches must be in [1, 64]");
   }
+  if (!(options_.rouletteThreshold > 0.0)) {
+    throw std::invalid_argument("the roulette threshold must be positive");
+  }
 }
 
 Colour MonteCarloIntegrator::Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,
@@ -175,7 +178,7 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::
   Candidate candidates[kMaxBranches];
   int count = depth + 1 < options_.maxDepth ? Scatter(ray, hit, n, node, sampler, candidates) : 0;
   // Russian roulette by throughput relative to the camera ray, whose importance is
-  // 1/N: survive with q = min(1, beta / kRouletteThreshold), then divide by q. (The root
+  // 1/N: survive with q = min(1, beta / threshold), then divide by q. (The root
   // is read here, not before tracing: a load right after the store that wrote it stalls.)
   const double rootImportance = count > 0 ? MaxComponent(tree[root].importance) : 0.0;
   const double rootScale = rootImportance > 0.0 ? 1.0 / rootImportance : 1.0;
@@ -184,7 +187,7 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::
     Candidate c = candidates[i];
     const double beta = MaxComponent(importance * c.weight) * rootScale;
     if (!(beta > 0.0)) continue;
-    const double q = beta * (1.0 / kRouletteThreshold);
+    const double q = beta / options_.rouletteThreshold;
     if (q < 1.0) {
       const std::uint32_t dimension =
           i == 0 ? SampleDimension::Roulette(node)

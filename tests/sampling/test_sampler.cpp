@@ -17,6 +17,7 @@
 #include "glint/transport/MonteCarloIntegrator.hpp"
 #include "glint/transport/WhittedIntegrator.hpp"
 #include "support/MonteCarloTesting.hpp"
+#include "support/Power.hpp"
 #include "support/Statistics.hpp"
 #include "support/TestScenes.hpp"
 
@@ -25,6 +26,7 @@ namespace {
 
 using testing::CanonicalScene;
 using testing::ChiSquare;
+using testing::ExpectAgreementWithPower;
 using testing::MeanAndError;
 using testing::PolygonCosineIntegral;
 using testing::RenderWithSampler;
@@ -304,6 +306,9 @@ TEST(Sampler, EverySamplerIsUnbiasedForLambertsFormula) {
   }
 }
 
+// Stratified and sobol images agree with random ones, block by block and in each
+// channel's whole-image mean, in both wall modes and in Whitted mode, through the shafts
+// of `glint render`; each comparison shows it would see a 1% bias (support/Power.hpp).
 TEST(Sampler, ImagesOfTheThreeSamplersAgreeBlockByBlock) {
   const Scene scene = CanonicalScene();
   MonteCarloOptions diffuse;
@@ -313,17 +318,18 @@ TEST(Sampler, ImagesOfTheThreeSamplersAgreeBlockByBlock) {
   const WhittedIntegrator whitted(scene, 10);
   const Integrator* integrators[] = {&terminal, &global, &whitted};
   const char* names[] = {"mc terminal", "mc diffuse", "whitted"};
+  // Rays per pixel for a relative standard error of the weighted mean near 0.15%.
+  const int spp[] = {64, 512, 32};
   for (int k = 0; k < 3; ++k) {
-    const Image r1 = RenderWithSampler(scene, *integrators[k], SamplerKind::Random, 64, 32, 11);
-    const Image r2 = RenderWithSampler(scene, *integrators[k], SamplerKind::Random, 64, 32, 12);
+    const Integrator& integrator = *integrators[k];
+    const Image pilot = RenderWithSampler(scene, integrator, SamplerKind::Random, 64, 8, 99);
+    const Image r1 = RenderWithSampler(scene, integrator, SamplerKind::Random, 64, spp[k], 11);
+    const Image r2 = RenderWithSampler(scene, integrator, SamplerKind::Random, 64, spp[k], 12);
     for (const SamplerKind kind : {SamplerKind::Stratified, SamplerKind::Sobol}) {
-      const Image a = RenderWithSampler(scene, *integrators[k], kind, 64, 32, 21);
-      const Image b = RenderWithSampler(scene, *integrators[k], kind, 64, 32, 22);
-      const BiasVerdict v = TestBias(a, b, r1, &r2);
-      std::printf("%s, %s against random: mean ratio %.5f (z %+.2f), max block z %.2f\n", names[k],
-                  SamplerName(kind), v.meanRatio, v.meanZ, v.maxBlockZ);
-      EXPECT_TRUE(v.agree) << names[k] << ", " << SamplerName(kind) << ": mean z " << v.meanZ
-                           << ", " << v.failedBlocks << " blocks beyond " << v.blockLimit;
+      const Image a = RenderWithSampler(scene, integrator, kind, 64, spp[k], 21);
+      const Image b = RenderWithSampler(scene, integrator, kind, 64, spp[k], 22);
+      ExpectAgreementWithPower(std::string(names[k]) + ", " + SamplerName(kind) + " against random",
+                               a, b, r1, &r2, pilot);
     }
   }
 }

@@ -56,6 +56,72 @@ inline double SidakAlpha(double familyAlpha, int tests) {
   return 1.0 - std::pow(1.0 - familyAlpha, 1.0 / tests);
 }
 
+// Regularised incomplete beta function I_x(a, b), by its continued fraction (modified
+// Lentz), with the symmetry I_x(a, b) = 1 - I_{1-x}(b, a) where the fraction converges
+// slowly.
+inline double BetaContinuedFraction(double a, double b, double x) {
+  constexpr double kTiny = 1e-300;
+  double c = 1.0;
+  double d = 1.0 - (a + b) * x / (a + 1.0);
+  d = 1.0 / (std::abs(d) < kTiny ? kTiny : d);
+  double h = d;
+  for (int m = 1; m <= 500; ++m) {
+    const double m2 = 2.0 * m;
+    for (const double aa : {m * (b - m) * x / ((a + m2 - 1.0) * (a + m2)),
+                            -(a + m) * (a + b + m) * x / ((a + m2) * (a + m2 + 1.0))}) {
+      d = 1.0 + aa * d;
+      d = 1.0 / (std::abs(d) < kTiny ? kTiny : d);
+      c = 1.0 + aa / c;
+      c = std::abs(c) < kTiny ? kTiny : c;
+      h *= d * c;
+    }
+    if (std::abs(d * c - 1.0) < 1e-15) break;
+  }
+  return h;
+}
+
+inline double IncompleteBeta(double a, double b, double x) {
+  if (x <= 0.0) return 0.0;
+  if (x >= 1.0) return 1.0;
+  const double front = std::exp(std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) +
+                                a * std::log(x) + b * std::log1p(-x));
+  if (x < (a + 1.0) / (a + b + 2.0)) return front * BetaContinuedFraction(a, b, x) / a;
+  return 1.0 - front * BetaContinuedFraction(b, a, 1.0 - x) / b;
+}
+
+// P(|T| > t) for Student's t with `dof` degrees of freedom: I_{dof/(dof+t^2)}(dof/2, 1/2).
+inline double StudentTTwoSided(double t, double dof) {
+  return IncompleteBeta(0.5 * dof, 0.5, dof / (dof + t * t));
+}
+
+// The |t| beyond which a two-sided test of level alpha fails, by bisection (P is monotone).
+inline double StudentTQuantileTwoSided(double alpha, double dof) {
+  double lo = 0.0;
+  double hi = 1e3;
+  for (int i = 0; i < 100; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (StudentTTwoSided(mid, dof) > alpha ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// Welch's t of two means with their standard errors from na and nb values, and the
+// Welch-Satterthwaite degrees of freedom.
+struct WelchT {
+  double t = 0.0;
+  double dof = 1.0;
+};
+inline WelchT Welch(double meanA, double seA, double na, double meanB, double seB, double nb) {
+  const double va = seA * seA;
+  const double vb = seB * seB;
+  WelchT w;
+  const double se = std::sqrt(va + vb);
+  w.t = se > 0.0 ? (meanA - meanB) / se : (meanA == meanB ? 0.0 : INFINITY);
+  const double den = va * va / (na - 1.0) + vb * vb / (nb - 1.0);
+  w.dof = den > 0.0 ? (va + vb) * (va + vb) / den : na + nb - 2.0;
+  return w;
+}
+
 struct ChiSquareResult {
   double statistic = 0.0;
   int dof = 0;

@@ -116,7 +116,9 @@ TEST(Stability, HugePhongExponentEqualsTheMirrorWeightedByTheCosine) {
   const std::int32_t o1 = phong.spheres[0].Object();
   ASSERT_EQ(mirror.ObjectName(o1), "O1");
   const std::vector<MeanAndError> a =
-      testing::RenderBlocks(phong, {}, kSize, kBlock, kSpp, 64, 10).blocks;
+      testing::RenderBlocks(phong, {}, kSize, kBlock, kSpp, 64, 10, Image(kSize, kSize),
+                            SamplerKind::Random)
+          .blocks;
   // The mirror scene, traced sample by sample so that each tree can be re-weighted.
   const MonteCarloIntegrator integrator(mirror, {});
   const Camera camera(mirror.wall, mirror.camera.eye, kSize, kSize);

@@ -30,6 +30,9 @@ struct MonteCarloOptions {
   // happen to find it.
   MirrorLight mirrorLight = MirrorLight::Nee;
   int maxDepth = 64;  // a safety cap; Russian roulette ends paths first
+  // Russian roulette's threshold (MonteCarloIntegrator::kRouletteThreshold); tests set a
+  // tiny one, which roulettes almost nothing, to show that roulette adds no bias.
+  double rouletteThreshold = 0.25;
 };
 
 class MonteCarloIntegrator final : public Integrator {
@@ -40,7 +43,7 @@ class MonteCarloIntegrator final : public Integrator {
   // by its throughput) the glass sphere's light paths were most of the image's error: a
   // refraction out of the rim after internal reflections carries 1 - F << 1 toward the
   // light and was killed, or multiplied up, at random (see BENCHMARKS.md, "samplers").
-  static constexpr double kRouletteThreshold = 0.25;
+  static constexpr double kRouletteThreshold = 0.25;  // MonteCarloOptions' default
   // With diffuse walls, a wall hit estimates the light seen in the mirrors with this
   // probability, and divides by it: the estimate costs more than the rest of the wall's
   // work (solving for the sphere's reflection point, two shadow segments per image) and

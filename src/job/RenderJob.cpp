@@ -111,6 +111,8 @@ RenderResult RunPasses(Camera& camera, const Integrator& integrator, const Rende
     spentBefore = progress.seconds;
     const bool underWay = progress.currentRays > 0;  // a pass under way: its done pixels stay
     loop.Resume(progress.passes, progress.spp, progress.stats, underWay);
+    r.resumed = progress.stats;
+    r.resumedPasses = progress.passes;
     if (underWay) {
       rays = progress.currentRays;
     } else if (!progressive) {

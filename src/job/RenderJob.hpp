@@ -13,7 +13,11 @@
 namespace glint {
 
 struct RenderResult {
-  RenderStats stats;
+  RenderStats stats;  // all the render's work, a resumed render's earlier sessions too
+  // A resumed render: what its checkpoint held (the work of the earlier sessions), so that
+  // stats - resumed is what this session traced.
+  RenderStats resumed;
+  std::uint32_t resumedPasses = 0;
   double seconds = 0.0;
   std::uint32_t passes = 0;
   std::uint64_t spp = 0;  // rays per pixel of the finished passes

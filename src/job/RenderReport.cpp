@@ -36,6 +36,12 @@ std::string StatsJson(const RenderArgs& args, const RenderSetup& s, const Camera
                {"refracted", st.refractedRays},   {"diffuse", st.diffuseRays},
                {"shadow", st.ShadowRaysTraced()}, {"traced", st.TracedRays()}};
   j["visibility_answered_without_a_ray"] = st.shadowRaysByShaft;
+  if (!args.resume.empty()) {
+    // What the checkpoint held: this session traced `rays` minus these.
+    j["resumed"] = {{"passes", r.resumedPasses},
+                    {"camera", r.resumed.cameraRays},
+                    {"traced", r.resumed.TracedRays()}};
+  }
   const double seconds = r.seconds > 0.0 ? r.seconds : 1e-9;
   j["mrays_per_second"] = static_cast<double>(st.TracedRays()) / seconds / 1e6;
   j["camera_paths_per_second"] = static_cast<double>(st.cameraRays) / seconds;

@@ -15,12 +15,19 @@ calibrate() {  # walls spp scale
     "$glint" render "$scene" --mode mc --walls "$walls" --size 64 --spp "$spp" --seed "$seed" \
       -q -o "$walls-$seed.pfm"
   done
+  # Exit 0: agree; exit 3: disagree (kExitDisagree); anything else (a bad option, an
+  # unreadable file) is an error of the test, never "a bias seen".
+  local code
   echo "$walls walls, unscaled:"
-  "$glint" compare "$walls-11.pfm" "$walls-12.pfm" "$walls-13.pfm" "$walls-14.pfm" || fail=1
+  code=0
+  "$glint" compare "$walls-11.pfm" "$walls-12.pfm" "$walls-13.pfm" "$walls-14.pfm" || code=$?
+  [ "$code" -eq 0 ] || { echo "compare_calibration: independent renders: exit $code, expected 0"; fail=1; }
   echo "$walls walls, A and B scaled by $scale:"
-  if "$glint" compare "$walls-11.pfm" "$walls-12.pfm" "$walls-13.pfm" "$walls-14.pfm" \
-      --scale "$scale"; then
-    echo "compare_calibration: a bias of $scale went unseen"
+  code=0
+  "$glint" compare "$walls-11.pfm" "$walls-12.pfm" "$walls-13.pfm" "$walls-14.pfm" \
+    --scale "$scale" || code=$?
+  if [ "$code" -ne 3 ]; then
+    echo "compare_calibration: a bias of $scale: exit $code, expected 3 (disagree)"
     fail=1
   fi
 }

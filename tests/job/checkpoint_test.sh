@@ -2,7 +2,8 @@
 # checkpoint_test.sh GLINT SCENE [LAUNCHER...]: a render killed with SIGKILL in the middle
 # and resumed from its checkpoint ends with the same image, bit for bit, as one that ran
 # through; a checkpoint of another render is refused. With LAUNCHER (e.g. mpirun -np 2),
-# the killed and the resumed renders run under it.
+# the killed and the resumed renders run under it. The resumed render's --stats prove that
+# it traced only what the checkpoint did not hold.
 set -u
 glint=$1
 scene=$2
@@ -11,17 +12,17 @@ launch=("$@")
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 status=0
-flags=(--mode mc --size 96 --spp 4096 -q)
-"$glint" render "$scene" "${flags[@]}" -o "$dir/through.pfm"
+# Two threads wherever it runs: a many-core machine would finish before the kill.
+flags=(--mode mc --size 96 --spp 4096 --threads 2 -q)
+"$glint" render "$scene" "${flags[@]}" -o "$dir/through.pfm" --stats "$dir/through.json"
 "${launch[@]}" "$glint" render "$scene" "${flags[@]}" -o "$dir/killed.pfm" \
   --checkpoint "$dir/ck" --checkpoint-every 0.1 &
 pid=$!
-# Kill once a checkpoint exists and has been replaced at least once (mid-render).
-for _ in $(seq 1 200); do
+# Kill as soon as the first checkpoint appears (written atomically: complete when seen).
+for _ in $(seq 1 1000); do
   [ -f "$dir/ck" ] && break
-  sleep 0.02
+  sleep 0.01
 done
-sleep 0.4
 kill -KILL "$pid"
 wait "$pid" 2>/dev/null
 pkill -KILL -f "$dir/killed.pfm" 2>/dev/null  # a launcher's children, if any survived it
@@ -29,7 +30,23 @@ pkill -KILL -f "$dir/killed.pfm" 2>/dev/null  # a launcher's children, if any su
 [ ! -f "$dir/killed.pfm" ] || { echo "FAIL: the killed render finished before the kill"; exit 1; }
 echo "checkpoint: $(head -c 200 "$dir/ck" | sed -n 2p | cut -c1-150)..."
 "${launch[@]}" "$glint" render "$scene" "${flags[@]}" -o "$dir/resumed.pfm" --resume "$dir/ck" \
-  || { echo "FAIL: the resume failed"; status=1; }
+  --stats "$dir/resumed.json" || { echo "FAIL: the resume failed"; status=1; }
+# The resumed render's counters: the checkpoint's part and this session's add up to the
+# render that ran through, camera ray for camera ray, and this session traced only the
+# rest (a resume that ignored the checkpoint would trace all of it again).
+/usr/bin/python3 - "$dir/through.json" "$dir/resumed.json" <<'PY' || status=1
+import json, sys
+through, resumed = (json.load(open(p)) for p in sys.argv[1:3])
+total = through["rays"]["camera"]
+before = resumed["resumed"]["camera"]
+session = resumed["rays"]["camera"] - before
+print(f"camera rays: {total} in the render that ran through; the checkpoint held {before}, "
+      f"the resumed session traced {session} ({100.0 * session / total:.1f}%)")
+ok = resumed["rays"]["camera"] == total and 0 < before < total and 0 < session < total
+if not ok:
+    print("FAIL: the resumed render did not trace exactly what the checkpoint lacked")
+sys.exit(0 if ok else 1)
+PY
 if cmp -s "$dir/through.pfm" "$dir/resumed.pfm"; then
   echo "resumed after SIGKILL: the same image, bit for bit, as the render that ran through"
 else

@@ -17,19 +17,25 @@ flags=(-std=c++20 -O1 -g -fsanitize=fuzzer-no-link,address,undefined -fno-saniti
        -DGLM_FORCE_XYZW_ONLY -I"$src/include" -isystem /usr/include/stb -w
        $(pkg-config --cflags OpenEXR))
 objects=()
+pids=()
 for s in "${sources[@]}"; do
   obj="$work/obj/$(basename "$s" .cpp).o"
   if [ ! -f "$obj" ] || [ "$src/$s" -nt "$obj" ] || [ -n "$(find "$src/include" -newer "$obj" -name '*.hpp' | head -1)" ]; then
     clang++ "${flags[@]}" -c "$src/$s" -o "$obj" &
+    pids+=($!)
   fi
   objects+=("$obj")
-  # two compilers at a time
+  # two compilers at a time; a failed compile fails the run (set -e)
   while [ "$(jobs -rp | wc -l)" -ge 2 ]; do wait -n; done
 done
-wait
+# Every compile's exit code, each waited for by its pid (a bare `wait` returns 0).
+for pid in "${pids[@]}"; do
+  wait "$pid" || { echo "fuzz: a compile failed"; exit 1; }
+done
 clang++ "${flags[@]}" -fsanitize=fuzzer "$src/tests/scene/fuzz/scene_fuzzer.cpp" "${objects[@]}" \
   $(pkg-config --libs OpenEXR) -o "$work/scene_fuzzer"
-cp "$src"/tests/scene/fuzz/corpus/* "$src"/tests/scene/fuzz/regressions/* "$work/corpus/" 2>/dev/null || true
+# The seed corpus must be there: a fuzzer started on nothing would find nothing.
+cp "$src"/tests/scene/fuzz/corpus/* "$src"/tests/scene/fuzz/regressions/* "$work/corpus/"
 cd "$work"
 ./scene_fuzzer -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 \
   -artifact_prefix="$work/artifacts/" -print_final_stats=1 corpus/

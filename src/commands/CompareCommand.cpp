@@ -30,6 +30,10 @@ Image Scaled(Image image, double scale) {
   return image;
 }
 
+bool SamePixels(const Image& x, const Image& y) {
+  return x.Width() == y.Width() && x.Height() == y.Height() && x.Pixels() == y.Pixels();
+}
+
 }  // namespace
 
 int RunCompare(const CompareArgs& args) {
@@ -46,6 +50,16 @@ int RunCompare(const CompareArgs& args) {
       throw InputError("the images differ in size: expected " + size(ref) + " as " +
                        args.reference + ", found " + size(*p));
     }
+  }
+  // The noise comes from A - B (and REF - REF2): one render given twice has none, and
+  // every difference from the reference would be infinitely many standard errors.
+  if (SamePixels(a, b)) {
+    throw InputError(args.b + ": the same image as " + args.a +
+                     ": A and B must be independent renders (another --seed)");
+  }
+  if (ref2 && SamePixels(ref, *ref2)) {
+    throw InputError(args.reference2 + ": the same image as " + args.reference +
+                     ": REF2 must be a render independent of REF (another --seed)");
   }
   BiasTestOptions options;
   options.block = args.block;

@@ -29,20 +29,7 @@ Scene MirrorScene(const std::vector<std::string>& overrides = {}) {
   return LoadScene(SourcePath("scenes/cornell-mirror.json"), overrides);
 }
 
-MeanAndError EstimateByMirroredLight(const Scene& scene, vec3 x, vec3 n, int count, int channel,
-                                     std::uint64_t seed) {
-  const MirroredLight mirrored(scene, *scene.light);
-  Pcg32 rng(seed, 1);
-  RenderStats stats;
-  MeanAndError m;
-  for (int i = 0; i < count; ++i) {
-    const double u = rng.Uniform();
-    m.Add(mirrored.Irradiance(x, n, u, rng.Uniform(), stats)[channel]);
-  }
-  return m;
-}
-
-// All three channels of the same, in one stream.
+// Irradiance at x from the light seen in the mirrors, by MirroredLight, every channel.
 struct ColourEstimate {
   MeanAndError c[3];
   void Add(Colour v) {
@@ -61,6 +48,12 @@ ColourEstimate MirroredLightColour(const Scene& scene, vec3 x, vec3 n, int count
     m.Add(mirrored.Irradiance(x, n, u, rng.Uniform(), stats));
   }
   return m;
+}
+
+// One channel of it.
+MeanAndError EstimateByMirroredLight(const Scene& scene, vec3 x, vec3 n, int count, int channel,
+                                     std::uint64_t seed) {
+  return MirroredLightColour(scene, x, n, count, seed).c[channel];
 }
 
 // The same irradiance E = int rho Le cos dw over the directions that meet a mirror and,

@@ -23,25 +23,7 @@ using testing::MeanAndError;
 using testing::PolygonCosineIntegral;
 using testing::RenderBlocks;
 
-// Radiance along one ray, estimated `n` times.
-MeanAndError EstimateRadiance(const MonteCarloIntegrator& integrator, vec3 start, vec3 d, int n,
-                              int channel, std::uint64_t seed) {
-  RayTree tree;
-  RenderStats stats;
-  Sampler sampler(Pcg32(seed, 9));
-  MeanAndError m;
-  for (int i = 0; i < n; ++i) {
-    tree.Clear();
-    Ray ray;
-    ray.start = start;
-    ray.direction = glm::normalize(d);
-    const std::uint32_t root = tree.Add(ray);
-    m.Add(integrator.Trace(tree, root, PixelShaft{}, sampler, stats)[channel]);
-  }
-  return m;
-}
-
-// The same for the three channels at once.
+// Radiance along one ray, estimated `n` times, every channel.
 std::array<MeanAndError, 3> EstimateRadianceColour(const MonteCarloIntegrator& integrator,
                                                    vec3 start, vec3 d, int n, std::uint64_t seed) {
   RayTree tree;
@@ -58,6 +40,12 @@ std::array<MeanAndError, 3> EstimateRadianceColour(const MonteCarloIntegrator& i
     for (int k = 0; k < 3; ++k) m[static_cast<std::size_t>(k)].Add(c[k]);
   }
   return m;
+}
+
+// One channel of it.
+MeanAndError EstimateRadiance(const MonteCarloIntegrator& integrator, vec3 start, vec3 d, int n,
+                              int channel, std::uint64_t seed) {
+  return EstimateRadianceColour(integrator, start, d, n, seed)[static_cast<std::size_t>(channel)];
 }
 
 TEST(MonteCarlo, UnoccludedWallRadianceMatchesLambertsFormula) {

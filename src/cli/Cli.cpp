@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -46,8 +47,9 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
       "chart, for one strategy or several (--compare)");
   conv->footer(kExitCodes);
   AddRenderOptions(conv, converge.render, false);
-  conv->add_option("--reference", converge.reference,
-                   "Reference image (PFM, linear radiance), e.g. a long render of glint itself")
+  conv->add_option(
+          "--reference", converge.reference,
+          "Reference image (PFM or EXR, linear radiance), e.g. a long render of glint itself")
       ->required();
   conv->add_option("--ladder", converge.ladder,
                    "Cumulative rays per pixel at which to measure, e.g. 1,2,4,8,16");
@@ -153,7 +155,7 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
   compareCommand
       ->add_option("--scale", compare.scale,
                    "Multiply A and B by this first: a calibration, e.g. 1.005 must disagree")
-      ->check(CLI::PositiveNumber)
+      ->check(PositiveNumber())
       ->capture_default_str();
 
   conv->add_option("--csv", converge.csv, "CSV of the measurements")->capture_default_str();
@@ -161,6 +163,16 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
                    "Log-log charts of relative MSE and of RMSE against time (PNG, drawn with "
                    "matplotlib); empty for none")
       ->capture_default_str();
+
+  // --spp means something else in each of these (they have no --time).
+  conv->get_option("--spp")->description(
+      "With --time-ladder: the rays per pixel of each pass (default: passes of 1, 2, 4, ... "
+      "rays as the time left allows); with --ladder the rungs give the rays");
+  treeCommand->get_option("--spp")->description(
+      "Rays traced through the pixel, each drawn as a tree (default: 1)");
+  viewCommand->get_option("--spp")->description(
+      "Rays per pixel of every pass (default: passes that double, or halve, toward about "
+      "0.25 s each)");
 
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;
@@ -184,6 +196,10 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
     return kExitBadInput;
   }
 
+  // glint bench without a scene, from another folder: the repository's canonical scene.
+  if (*benchCommand && benchCommand->count("scene") == 0 && !std::filesystem::exists(bench.scene)) {
+    bench.scene = std::string(GLINT_TOOLS_DIR) + "/../scenes/cornell.json";
+  }
   RecordMonteCarloSwitches(render, args);
   args.cluster = &cluster;
   RecordMonteCarloSwitches(conv, converge.render);

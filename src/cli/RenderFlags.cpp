@@ -1,9 +1,21 @@
 #include "cli/RenderFlags.hpp"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
 namespace glint {
+
+CLI::Validator PositiveNumber() {
+  return CLI::Validator(
+      [](const std::string& v) {
+        double x = 0.0;
+        const bool number = CLI::detail::lexical_cast(v, x);
+        return number && x > 0.0 && std::isfinite(x) ? std::string()
+                                                     : "expected a number > 0, found " + v;
+      },
+      "NUMBER > 0");
+}
 
 // With `outputs` false (for converge), the options that name output files are left out.
 void AddRenderOptions(CLI::App* render, RenderArgs& args, bool outputs) {
@@ -51,11 +63,12 @@ void AddRenderOptions(CLI::App* render, RenderArgs& args, bool outputs) {
       ->add_option("--exposure", args.exposure,
                    "Display mapping: radiance is multiplied by this before the sRGB curve "
                    "(PNG and PPM only); default: the scene's value for the mode")
-      ->check(CLI::PositiveNumber);
+      ->check(PositiveNumber());
   if (outputs)
     render->add_option("-o,--output", args.outputs,
                        "Output file, repeatable; the extension picks the format: .png and .ppm "
-                       "(display image), .pfm (linear radiance). Default: SCENE-NAME.png");
+                       "(display image), .pfm and .exr (linear radiance). Default: "
+                       "SCENE-NAME.png");
   if (outputs) {
     render->add_option("--checkpoint", args.checkpoint,
                        "Save the render's state (every pixel's sums and samples) to this file "

@@ -143,8 +143,8 @@ inline bool BlocksAgree(const BlockEstimates& a, const BlockEstimates& b, double
 }
 
 // BlocksAgree, and the power to see a 1% bias: in every channel, 1% of the whole-image
-// mean is at least 4 standard errors of the difference (plus the t quantile's excess
-// over the normal's), and a's channel scaled by 1.01 or 0.99 is refused.
+// mean is at least kPowerSigmas standard errors of the difference, and a's channel
+// scaled by 1.01 or 0.99 is refused.
 inline void ExpectBlocksAgreeWithPower(const std::string& label, const BlockEstimates& a,
                                        const BlockEstimates& b, double familyAlpha = 0.01) {
   std::string why;
@@ -157,7 +157,7 @@ inline void ExpectBlocksAgreeWithPower(const std::string& label, const BlockEsti
         "standard errors\n",
         label.c_str(), k, a.whole[k].mean, b.whole[k].mean,
         (a.whole[k].mean - b.whole[k].mean) / se, sigmas);
-    EXPECT_GE(sigmas, 4.0) << label << ", channel " << k;
+    EXPECT_GE(sigmas, kPowerSigmas) << label << ", channel " << k;
     for (const double s : {1.01, 0.99}) {
       Colour scale(1.0);
       scale[k] = s;

@@ -22,14 +22,6 @@ Image ReadInput(const std::string& path) {
   }
 }
 
-Image Scaled(Image image, double scale) {
-  if (scale == 1.0) return image;
-  for (int y = 0; y < image.Height(); ++y) {
-    for (int x = 0; x < image.Width(); ++x) image.At(x, y) *= scale;
-  }
-  return image;
-}
-
 bool SamePixels(const Image& x, const Image& y) {
   return x.Width() == y.Width() && x.Height() == y.Height() && x.Pixels() == y.Pixels();
 }
@@ -37,8 +29,8 @@ bool SamePixels(const Image& x, const Image& y) {
 }  // namespace
 
 int RunCompare(const CompareArgs& args) {
-  const Image a = Scaled(ReadInput(args.a), args.scale);
-  const Image b = Scaled(ReadInput(args.b), args.scale);
+  const Image a = ReadInput(args.a).Scaled(Colour(args.scale));
+  const Image b = ReadInput(args.b).Scaled(Colour(args.scale));
   const Image ref = ReadInput(args.reference);
   std::optional<Image> ref2;
   if (!args.reference2.empty()) ref2 = ReadInput(args.reference2);

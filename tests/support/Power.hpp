@@ -95,19 +95,11 @@ struct Agreement {
   bool agree = true;
 };
 
-inline Image Scaled(const Image& image, Colour scale) {
-  Image out = image;
-  for (int y = 0; y < out.Height(); ++y) {
-    for (int x = 0; x < out.Width(); ++x) out.At(x, y) *= scale;
-  }
-  return out;
-}
-
 inline Agreement Agree(const Image& a, const Image& b, const Image& r1, const Image* r2,
                        const Image& pilot, Colour scale = Colour(1.0)) {
   Agreement g;
   g.blocks = scale == Colour(1.0) ? TestBias(a, b, r1, r2)
-                                  : TestBias(Scaled(a, scale), Scaled(b, scale), r1, r2);
+                                  : TestBias(a.Scaled(scale), b.Scaled(scale), r1, r2);
   g.means = WeightedChannelMeans(a, b, r1, r2, pilot, scale);
   g.agree = g.blocks.agree;
   for (int k = 0; k < 3; ++k) g.agree = g.agree && std::abs(g.means.z[k]) <= kMeanSigmas;

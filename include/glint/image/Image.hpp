@@ -19,6 +19,13 @@ class Image {
   Colour& At(int x, int y) { return pixels_[Index(x, y)]; }
   Colour At(int x, int y) const { return pixels_[Index(x, y)]; }
   const std::vector<Colour>& Pixels() const { return pixels_; }
+  // Every pixel times `factor`, channel by channel (glint compare's --scale, the tests'
+  // power checks).
+  Image Scaled(Colour factor) const {
+    Image out = *this;
+    for (Colour& c : out.pixels_) c *= factor;
+    return out;
+  }
 
   // The mapping function: radiance times exposure, clamped to [0,1], the sRGB transfer
   // curve, then 8 bits. Returns RGB bytes, row 0 first.

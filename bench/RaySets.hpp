@@ -38,7 +38,7 @@ inline const Scene& CanonicalScene() {
 }
 
 inline RaySet CameraRays(const Scene& scene, int count = kRays) {
-  const Camera camera(scene.wall, scene.camera.eye, 256, 256);
+  const Camera camera(scene.wall, scene.camera, 256, 256);
   Pcg32 rng(7, 1);
   RaySet set;
   for (int i = 0; i < count; ++i) {

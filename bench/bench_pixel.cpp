@@ -13,7 +13,7 @@ namespace {
 
 void RenderPixels(benchmark::State& state, const Integrator& integrator, int spp) {
   const Scene& scene = CanonicalScene();
-  Camera camera(scene.wall, scene.camera.eye, 256, 256);
+  Camera camera(scene.wall, scene.camera, 256, 256);
   camera.PrepareShafts(scene, integrator.ShadowLights());  // as the renderer does
   RayTree trees;
   RenderStats stats;

@@ -14,8 +14,9 @@ What it builds (the trust issue, #15):
 - materials: `mirror` a sharp Glossy BSDF, `glass` a sharp Glass BSDF, `lambertian` a
   Diffuse BSDF; `phong` is refused: glint's lobe is zero where R.psi <= 0, which no Cycles
   BSDF reproduces (not even at exponent 0, which is Lambertian only at normal incidence);
-- the camera from the design's set-up rule: at the eye, looking down -z, its vertical field
-  of view spanning the room's front opening;
+- the camera as glint's: at the eye, looking down -z, its vertical field of view spanning
+  the view plane (the room's height) at the scene's `view_plane_distance`, or by the
+  design's set-up rule the room's front opening;
 - a box pixel filter one pixel wide, no denoising, no adaptive sampling, no clamping,
   caustics on, bounce limits 64; terminal walls are `max diffuse bounces = 0`.
 Every Blender property goes through SetProperty, which refuses a name its owner lacks:
@@ -340,7 +341,9 @@ def BuildCamera(bpy, scene, width, height):
     room = scene["room"]
     eye = scene["camera"]["eye"]
     front = room["position"][2] + room["size"]
-    distance = eye[2] - front  # the set-up rule puts the view plane in the front opening
+    # The scene's view plane distance, or the set-up rule's, which puts the view plane in
+    # the front opening; the plane's height is the room's size either way.
+    distance = scene["camera"].get("view_plane_distance", eye[2] - front)
     cam_data = bpy.data.cameras.new("camera")
     SetProperties(cam_data, type="PERSP", sensor_fit="VERTICAL", clip_start=1e-4,
                   clip_end=1e4)

@@ -35,7 +35,15 @@ bool Camera::EyeOnAxis(const Wall& room, vec3 eye) {
   return room.EyeOnAxis(eye);
 }
 
-Camera::Camera(const Wall& room, vec3 eye, int width, int height)
+double Camera::SetUpDistance(const Wall& room, vec3 eye) {
+  // The ray from the eye to a front corner, (c.x +- s/2, c.y +- s/2, front), must pass
+  // through the view plane's corner (+-halfWidth, +-halfHeight) at distance d. With the
+  // view plane the size of the room's cross-section, similar triangles give
+  // d = eye.z - front: the plane lies in the front opening.
+  return eye.z - (room.Position().z + room.Size());
+}
+
+Camera::Camera(const Wall& room, vec3 eye, int width, int height, double viewPlaneDistance)
     : eye_(eye), width_(width), height_(height) {
   if (width <= 0 || height <= 0) throw std::invalid_argument("image size must be positive");
   if (!EyeOnAxis(room, eye)) {
@@ -44,13 +52,11 @@ Camera::Camera(const Wall& room, vec3 eye, int width, int height)
         "the room's open side");
   }
   const vec3 back = room.Centre() - vec3(0.0, 0.0, 0.5 * room.Size());
-  const double front = room.Position().z + room.Size();
+  if (viewPlaneDistance < 0.0 || !std::isfinite(viewPlaneDistance)) {
+    throw std::invalid_argument("the view plane distance must be positive (0: the set-up rule)");
+  }
   viewDirection_ = glm::normalize(back - eye);
-  // The set-up rule: the ray from the eye to a front corner, (c.x +- s/2, c.y +- s/2,
-  // front), must pass through the view plane's corner (+-halfWidth, +-halfHeight) at
-  // distance d. With the view plane the size of the room's cross-section, similar
-  // triangles give d = eye.z - front: the plane lies in the front opening.
-  viewPlaneDistance_ = eye.z - front;
+  viewPlaneDistance_ = viewPlaneDistance > 0.0 ? viewPlaneDistance : SetUpDistance(room, eye);
   halfHeight_ = 0.5 * room.Size();
   // A non-square image keeps square pixels: the plane widens with the aspect ratio.
   halfWidth_ = halfHeight_ * static_cast<double>(width) / static_cast<double>(height);

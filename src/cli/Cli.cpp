@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "cli/FlagTypo.hpp"
 #include "cli/RenderFlags.hpp"
+#include "cli/Revision.hpp"  // generated in the build tree (cmake/Revision.cmake)
 #include "commands/BenchCommand.hpp"
 #include "commands/CompareCommand.hpp"
 #include "commands/ConvergeCommand.hpp"
@@ -15,6 +17,7 @@
 #include "commands/ViewCommand.hpp"
 #include "glint/core/JsonReader.hpp"
 #include "job/Cluster.hpp"
+#include "job/DataFiles.hpp"
 #include "job/RenderSetup.hpp"
 
 namespace glint {
@@ -33,7 +36,7 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
   CLI::App app{"glint: a small global-illumination renderer (Whitted and Monte Carlo)", "glint"};
   app.footer(kExitCodes);
   app.require_subcommand(1);
-  app.set_version_flag("--version", "glint 0.1");
+  app.set_version_flag("--version", "glint " GLINT_VERSION " (revision " GLINT_REVISION ")");
 
   RenderArgs args;
   CLI::App* render = app.add_subcommand("render", "Render a scene file to one or more images");
@@ -61,11 +64,16 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
                    "branches=1,2,4, sampler=random,stratified,sobol or mirror-light=nee,brdf");
   TreeArgs tree;
   CLI::App* treeCommand = app.add_subcommand(
-      "tree", "Write the ray trees of one pixel as a Graphviz graph (render it with dot -Tpng)");
+      "tree",
+      "Draw the ray trees of one pixel as a Graphviz graph: a picture (-o X.png, .svg, "
+      ".pdf) or its text (-o X.dot)");
   treeCommand->footer(kExitCodes);
   AddRenderOptions(treeCommand, tree.render, false);
   treeCommand->add_option("--pixel", tree.pixel, "The pixel, X,Y (0,0 is top left)")->required();
-  treeCommand->add_option("-o,--output", tree.output, "Graphviz file")->capture_default_str();
+  treeCommand
+      ->add_option("-o,--output", tree.output,
+                   "X.dot: Graphviz text; X.png, X.svg or X.pdf: the picture Graphviz draws")
+      ->capture_default_str();
   treeCommand->add_option("--max-nodes", tree.maxNodes, "Draw at most this many nodes")
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
@@ -106,7 +114,8 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
       "view",
       "Watch the render refine in the browser: a local web page with the image, its "
       "exposure, the modes' switches, sliders for scene values, a pixel's ray trees, the "
-      "error against a reference and downloads; until SIGINT or SIGTERM");
+      "error against a reference and downloads; until SIGINT or SIGTERM. Rendering rests "
+      "while no page is open (10 s after the last one asked)");
   viewCommand->footer(
       "Exit codes: 0 stopped by SIGINT or SIGTERM; 1 bad input (scene file, --set or option "
       "value) or an address and port that cannot be had.");
@@ -122,6 +131,15 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
   viewCommand->add_option("--reference", view.reference,
                           "Reference image (PFM or EXR) of the same size: A/B flip, a "
                           "relative-error view and a chart of relative MSE against time");
+  viewCommand
+      ->add_option("--time", view.limits.seconds,
+                   "Stop accumulating after this many seconds of rendering (the server stays; "
+                   "new settings start again); default: no limit")
+      ->check(PositiveNumber());
+  viewCommand
+      ->add_option("--max-spp", view.limits.spp,
+                   "Stop accumulating at this many rays per pixel; default: no limit")
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
 
   CompareArgs compare;
   CLI::App* compareCommand = app.add_subcommand(
@@ -192,13 +210,22 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    // A misspelt flag first: it is often why a required one seems missing
+    // (`converge --refrence R.pfm`).
+    for (const CLI::App* sub : app.get_subcommands()) {
+      const std::string message = UnknownFlagMessage(*sub, sub->remaining());
+      if (!message.empty()) {
+        std::fprintf(stderr, "%s\n", message.c_str());
+        return kExitBadInput;
+      }
+    }
     app.exit(e);
     return kExitBadInput;
   }
 
   // glint bench without a scene, from another folder: the repository's canonical scene.
   if (*benchCommand && benchCommand->count("scene") == 0 && !std::filesystem::exists(bench.scene)) {
-    bench.scene = std::string(GLINT_TOOLS_DIR) + "/../scenes/cornell.json";
+    bench.scene = DataFile("scenes/cornell.json");
   }
   RecordMonteCarloSwitches(render, args);
   args.cluster = &cluster;

@@ -38,7 +38,7 @@ RenderArgs RowArgs(const BenchArgs& args, const std::string& mode, int threads) 
 Row Measure(const BenchArgs& args, const std::string& mode, int threads) {
   const RenderArgs r = RowArgs(args, mode, threads);
   const RenderSetup s = Prepare(r, false);
-  Camera camera(s.scene.wall, s.scene.camera.eye, s.width, s.height);
+  Camera camera(s.scene.wall, s.scene.camera, s.width, s.height);
   const std::unique_ptr<Integrator> integrator = MakeIntegrator(r, s);
   RenderOptions options;
   options.sampler = SamplerFromArgs(r);
@@ -98,7 +98,7 @@ int RunBenchRanks(const BenchArgs& args, const Cluster& cluster) {
     if (cluster.Root()) one = Measure(args, mode, 1);
     const RenderArgs r = RowArgs(args, mode, 1);
     const RenderSetup s = Prepare(r, false);
-    Camera camera(s.scene.wall, s.scene.camera.eye, s.width, s.height);
+    Camera camera(s.scene.wall, s.scene.camera, s.width, s.height);
     const std::unique_ptr<Integrator> integrator = MakeIntegrator(r, s);
     RenderOptions options;
     options.sampler = SamplerFromArgs(r);

@@ -12,9 +12,11 @@
 #include "glint/core/JsonReader.hpp"
 #include "glint/image/ImageError.hpp"
 #include "glint/image/ImageIO.hpp"
+#include "job/DataFiles.hpp"
 #include "job/ExitCode.hpp"
 #include "job/Interrupt.hpp"
 #include "job/PassLoop.hpp"
+#include "job/Subprocess.hpp"
 
 namespace glint {
 
@@ -139,7 +141,7 @@ int RunConverge(const ConvergeArgs& a) {
       v.args.size = std::to_string(reference.Width()) + "x" + std::to_string(reference.Height());
     }
     const RenderSetup s = Prepare(v.args, /*checkOutputs=*/false);
-    Camera camera(s.scene.wall, s.scene.camera.eye, s.width, s.height);
+    Camera camera(s.scene.wall, s.scene.camera, s.width, s.height);
     const std::unique_ptr<Integrator> integrator = MakeIntegrator(v.args, s);
     RenderOptions options;
     options.seed = v.args.seed;
@@ -188,10 +190,11 @@ int RunConverge(const ConvergeArgs& a) {
   // Debian's interpreter, which sees python3-matplotlib, even where another python3
   // (a pyenv, a venv) comes first on PATH.
   const char* python = ::access("/usr/bin/python3", X_OK) == 0 ? "/usr/bin/python3" : "python3";
-  const std::string command = std::string(python) + " '" + GLINT_TOOLS_DIR +
-                              "/plot_convergence.py' '" + a.csv + "' '" + a.chart + "'";
-  if (std::system(command.c_str()) != 0) {
-    std::fprintf(stderr, "glint converge: the chart could not be drawn (%s)\n", command.c_str());
+  const std::vector<std::string> command = {python, DataFile("tools/plot_convergence.py"), a.csv,
+                                            a.chart};
+  if (RunProgram(command) != 0) {
+    std::fprintf(stderr, "glint converge: the chart could not be drawn (%s %s %s %s)\n",
+                 command[0].c_str(), command[1].c_str(), command[2].c_str(), command[3].c_str());
     return kExitOutputFailed;
   }
   return kExitOk;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <thread>
 
 #include "commands/ViewSettings.hpp"
 #include "glint/camera/PassSchedule.hpp"
@@ -46,8 +47,14 @@ std::string RgbePixels(const Image& image) {
   return bytes;
 }
 
-LiveRender::LiveRender(const RenderArgs& args, std::optional<Image> reference)
-    : reference_(std::move(reference)), job_(MakeJob(args, 1)) {
+std::int64_t Now() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(
+             std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+LiveRender::LiveRender(const RenderArgs& args, std::optional<Image> reference, LiveLimits limits)
+    : reference_(std::move(reference)), limits_(limits), lastAsked_(Now()), job_(MakeJob(args, 1)) {
   CheckReference(job_->setup);
   thread_ = std::thread([this]() { Loop(); });
 }
@@ -83,6 +90,37 @@ std::shared_ptr<const LiveJob> LiveRender::MakeJob(const RenderArgs& args,
   return job;
 }
 
+void LiveRender::Check(const RenderArgs& args) {
+  MakeJob(args, 0);
+}
+
+void LiveRender::Asked() {
+  lastAsked_ = Now();
+}
+
+double LiveRender::SecondsSinceAsked() const {
+  return 1e-9 * static_cast<double>(Now() - lastAsked_.load());
+}
+
+std::string LiveRender::Status() const {
+  switch (status_.load()) {
+    case 1:
+      return "resting";
+    case 2:
+      return "done";
+    default:
+      return "rendering";
+  }
+}
+
+bool LiveRender::ShouldWait(const LiveFrame& progress) {
+  const bool done = (limits_.seconds > 0.0 && progress.seconds >= limits_.seconds) ||
+                    (limits_.spp > 0 && progress.spp >= limits_.spp);
+  const bool idle = SecondsSinceAsked() > kIdleSeconds;
+  status_ = done ? 2 : idle ? 1 : 0;
+  return done || idle;
+}
+
 std::uint64_t LiveRender::Apply(const RenderArgs& args) {
   const std::shared_ptr<const LiveJob> current = Job();
   if (SettingsJson(args) == SettingsJson(current->args)) return current->generation;
@@ -112,14 +150,17 @@ void LiveRender::Loop() {
   const Cluster single;  // this process alone
   LiveFrame progress;    // of the current job: counters and error history
   Clock::time_point start;
+  Clock::time_point restBegan;
+  bool resting = false;
   int rays = 1;
   while (!stop_) {
-    restart_ = false;
-    if (job != Job()) {  // the first pass, new settings, or one abandoned
+    if (job != Job()) {  // (restart_ stays set while resting: it is only a cancel flag)
+      restart_ = false;  // the first pass, new settings, or one abandoned
       job = Job();
       const RenderSetup& s = job->setup;
       start = Clock::now();
-      camera = std::make_unique<Camera>(s.scene.wall, s.scene.camera.eye, s.width, s.height);
+      resting = false;
+      camera = std::make_unique<Camera>(s.scene.wall, s.scene.camera, s.width, s.height);
       PrepareShaftsIfTheyPay(*camera, *job->integrator, s, /*manyPasses=*/true);
       RenderOptions options;
       options.seed = job->args.seed;
@@ -130,6 +171,17 @@ void LiveRender::Loop() {
       progress = LiveFrame{};
       progress.generation = job->generation;
       rays = job->args.spp > 0 ? job->args.spp : 1;  // --spp: the rays of every pass
+    }
+    if (ShouldWait(progress)) {  // back to idle until a page asks, or settings change
+      if (!resting) restBegan = Clock::now();
+      resting = true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      continue;
+    }
+    if (resting) start += Clock::now() - restBegan;  // the time axis counts rendering only
+    resting = false;
+    if (limits_.spp > 0) {  // the last pass takes what is left of the cap
+      rays = static_cast<int>(std::min<std::uint64_t>(rays, limits_.spp - progress.spp));
     }
     const PassLoop::Pass pass = loop->Render(rays);
     if (restart_) {  // new settings, or the end: the pass is dropped

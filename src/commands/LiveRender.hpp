@@ -50,14 +50,24 @@ struct LiveFrame {
   std::vector<std::array<double, 2>> error;
 };
 
+// When the accumulation stops by itself (0: never).
+struct LiveLimits {
+  double seconds = 0.0;   // --time: of rendering, set-up included
+  std::uint64_t spp = 0;  // --max-spp: rays per pixel
+};
+
 class LiveRender {
  public:
+  // With no page asking for a frame for this long, rendering pauses (the process goes
+  // back to idle) until one asks again.
+  static constexpr double kIdleSeconds = 10.0;
+
   // A pass is made to last about this long (rays per pixel double up to it): several
   // frames a second, yet long enough that a pass's set-up costs little (BENCHMARKS.md).
   static constexpr double kPassSeconds = 0.25;
 
   // Starts rendering `args` at once; throws InputError for bad settings.
-  LiveRender(const RenderArgs& args, std::optional<Image> reference);
+  LiveRender(const RenderArgs& args, std::optional<Image> reference, LiveLimits limits = {});
   ~LiveRender();
   LiveRender(const LiveRender&) = delete;
   LiveRender& operator=(const LiveRender&) = delete;
@@ -65,6 +75,12 @@ class LiveRender {
   // Checks `args` and, if they differ from the current ones, restarts with them; throws
   // InputError (the render goes on with the old settings). Returns the generation.
   std::uint64_t Apply(const RenderArgs& args);
+  // Throws InputError if `args` would not render; changes nothing.
+  static void Check(const RenderArgs& args);
+  // A page asked for the state or a frame: rendering goes on (or resumes).
+  void Asked();
+  // "rendering", "resting" (no page asked for kIdleSeconds) or "done" (a limit reached).
+  std::string Status() const;
   std::shared_ptr<const LiveJob> Job() const;
   std::shared_ptr<const LiveFrame> Frame() const;  // null before the first pass
   const std::optional<Image>& Reference() const { return reference_; }
@@ -78,7 +94,14 @@ class LiveRender {
   void CheckReference(const RenderSetup& s) const;
   void Loop();
 
+  // Whether the loop should wait before the next pass, and says why in status_.
+  bool ShouldWait(const LiveFrame& progress);
+  double SecondsSinceAsked() const;
+
   std::optional<Image> reference_;
+  LiveLimits limits_;
+  std::atomic<std::int64_t> lastAsked_;  // steady clock, nanoseconds
+  std::atomic<int> status_{0};           // 0 rendering, 1 resting, 2 done
   mutable std::mutex mutex_;
   std::shared_ptr<const LiveJob> job_;
   std::shared_ptr<const LiveFrame> frame_;

@@ -1,5 +1,6 @@
 #include "commands/RenderCommand.hpp"
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <memory>
@@ -16,6 +17,53 @@
 #include "job/RenderReport.hpp"
 
 namespace glint {
+
+namespace {
+
+// An interrupted pass leaves pixels it never reached without a sample: in the saved image
+// they are a magenta and black checkerboard of 8-pixel squares (no render gives it), so
+// that nobody takes them for black. Returns how many there are; `rows` gets the number of
+// rows from the top in which every pixel was finished.
+std::size_t MarkUnrendered(const Camera& camera, Image& image, int& rows) {
+  std::vector<bool> started(static_cast<std::size_t>(camera.Width()) * camera.Height(), false);
+  for (const auto& cut : camera.CutShort()) started[cut.first] = true;
+  std::size_t unrendered = 0;
+  rows = camera.Height();
+  for (int y = 0; y < camera.Height(); ++y) {
+    for (int x = 0; x < camera.Width(); ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * camera.Width() + x;
+      const Pixel& p = camera.PixelAt(i);
+      if (p.Passes() == 0) rows = std::min(rows, y);
+      if (p.Samples() > 0 || started[i]) continue;
+      ++unrendered;
+      image.At(x, y) = ((x / 8 + y / 8) % 2 == 0) ? Colour(1.0, 0.0, 1.0) : Colour(0.0);
+    }
+  }
+  return unrendered;
+}
+
+// What an interrupted render saved, in one line.
+void ReportInterrupted(const RenderResult& r, const std::string& partial, std::size_t unrendered,
+                       std::size_t pixels, int rows) {
+  const int signal = InterruptSignal() != 0 ? InterruptSignal() : SIGINT;
+  std::fprintf(stderr, "glint: stopped by %s after %.2f s; saved what was rendered to %s",
+               signal == SIGTERM ? "SIGTERM" : "SIGINT", r.seconds, partial.c_str());
+  if (unrendered > 0) {
+    std::fprintf(stderr,
+                 ": %zu of %zu pixels (%.1f%%) rendered, the first %d rows complete; the rest "
+                 "is a magenta and black checkerboard (a render with --time stops between "
+                 "passes and saves a whole image)",
+                 pixels - unrendered, pixels,
+                 100.0 * static_cast<double>(pixels - unrendered) / static_cast<double>(pixels),
+                 rows);
+  } else {
+    std::fprintf(stderr, ": every pixel, %u complete passes (%llu rays per pixel)", r.passes,
+                 static_cast<unsigned long long>(r.spp));
+  }
+  std::fprintf(stderr, "\n");
+}
+
+}  // namespace
 
 int RunRender(const RenderArgs& args, const Cluster& cluster) {
   // Every rank checks the input (rank 0 the outputs too); all stop if any rank fails,
@@ -36,7 +84,7 @@ int RunRender(const RenderArgs& args, const Cluster& cluster) {
     }
     return kExitBadInput;
   }
-  Camera camera(s.scene.wall, s.scene.camera.eye, s.width, s.height);
+  Camera camera(s.scene.wall, s.scene.camera, s.width, s.height);
   const std::unique_ptr<Integrator> integrator = MakeIntegrator(args, s);
   const RenderResult r = RunPasses(camera, *integrator, args, s);
   if (!cluster.Root())
@@ -45,8 +93,11 @@ int RunRender(const RenderArgs& args, const Cluster& cluster) {
   const auto target = [&](const std::string& path) {
     return r.interrupted ? PartialPath(path) : path;
   };
+  Image image = camera.ToImage();
+  int rows = 0;
+  const std::size_t unrendered = r.interrupted ? MarkUnrendered(camera, image, rows) : 0;
   try {
-    for (const std::string& path : s.outputs) camera.Save(target(path), s.exposure);
+    for (const std::string& path : s.outputs) WriteImage(image, target(path), s.exposure);
     if (!args.statsPath.empty()) {
       WriteFileAtomically(target(args.statsPath), StatsJson(args, s, camera, r));
     }
@@ -55,11 +106,9 @@ int RunRender(const RenderArgs& args, const Cluster& cluster) {
     return kExitOutputFailed;
   }
   if (r.interrupted) {
-    const int signal = InterruptSignal() != 0 ? InterruptSignal() : SIGINT;
-    std::fprintf(stderr, "glint: stopped by %s after %.2f s; saved what was rendered to %s\n",
-                 signal == SIGTERM ? "SIGTERM" : "SIGINT", r.seconds,
-                 PartialPath(s.outputs.front()).c_str());
-    return 128 + signal;
+    ReportInterrupted(r, PartialPath(s.outputs.front()), unrendered,
+                      static_cast<std::size_t>(s.width) * static_cast<std::size_t>(s.height), rows);
+    return 128 + (InterruptSignal() != 0 ? InterruptSignal() : SIGINT);
   }
   if (!args.quiet) PrintSummary(args, s, r);
   return kExitOk;

@@ -1,10 +1,15 @@
 #include "commands/TreeCommand.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
+#include <stdexcept>
 
 #include "glint/core/JsonReader.hpp"
 #include "glint/image/ImageIO.hpp"
 #include "job/ExitCode.hpp"
+#include "job/Subprocess.hpp"
 
 namespace glint {
 
@@ -75,7 +80,7 @@ std::string Dot(const RayTree& tree, const Scene& scene, int x, int y, int maxNo
 
 PixelTrees TracePixelTrees(const RenderArgs& args, const RenderSetup& s,
                            const Integrator& integrator, int x, int y) {
-  const Camera camera(s.scene.wall, s.scene.camera.eye, s.width, s.height);
+  const Camera camera(s.scene.wall, s.scene.camera, s.width, s.height);
   // The same random numbers as pixel (x, y) of the first pass of `glint render`.
   const auto index = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(s.width) +
                      static_cast<std::uint64_t>(x);
@@ -112,6 +117,52 @@ nlohmann::json TreeJson(const RayTree& tree, const Scene& scene, int maxNodes) {
   return {{"nodes", nodes}, {"total", tree.Size()}};
 }
 
+namespace {
+
+// "dot" for Graphviz text, or the image format dot renders to; anything else refused
+// (before the rays are traced), as is an image when Graphviz is not installed.
+std::string TreeFormat(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == ".dot" || ext == ".gv") return "dot";
+  if (ext != ".png" && ext != ".svg" && ext != ".pdf") {
+    throw InputError("-o " + path + ": expected a file name ending in .dot (Graphviz text), " +
+                     ".png, .svg or .pdf (drawn by Graphviz), found '" + ext + "'");
+  }
+  if (!OnPath("dot")) {
+    throw InputError("-o " + path + ": drawing the tree needs Graphviz's dot, which is not " +
+                     "installed (apt-get install graphviz, or tools/setup.sh); -o " +
+                     std::filesystem::path(path).stem().string() + ".dot writes the text");
+  }
+  return ext.substr(1);
+}
+
+// Writes the Graphviz text, or the picture dot draws from it; either way the output
+// appears whole or not at all.
+void WriteTree(const std::string& path, const std::string& format, const std::string& dot) {
+  if (format == "dot") {
+    WriteFileAtomically(path, dot);
+    return;
+  }
+  const std::filesystem::path target(path);
+  const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : ".";
+  const std::string base = (dir / ("." + target.filename().string())).string();
+  const std::string text = base + ".tmp.dot";
+  const std::string image = base + ".tmp." + format;
+  WriteFileAtomically(text, dot);
+  const int code = RunProgram({"dot", "-T" + format, "-o", image, text});
+  std::remove(text.c_str());
+  if (code != 0) {
+    std::remove(image.c_str());
+    throw std::runtime_error(path + ": Graphviz's dot failed (exit code " + std::to_string(code) +
+                             ")");
+  }
+  std::filesystem::rename(image, target);
+}
+
+}  // namespace
+
 int RunTree(const TreeArgs& a) {
   int x = 0;
   int y = 0;
@@ -123,10 +174,11 @@ int RunTree(const TreeArgs& a) {
     throw InputError("--pixel " + a.pixel + ": outside the " + std::to_string(s.width) + "x" +
                      std::to_string(s.height) + " image");
   }
+  const std::string format = TreeFormat(a.output);
   CheckWritable(a.output);
   const std::unique_ptr<Integrator> integrator = MakeIntegrator(a.render, s);
   const PixelTrees p = TracePixelTrees(a.render, s, *integrator, x, y);
-  WriteFileAtomically(a.output, Dot(p.trees, s.scene, x, y, a.maxNodes));
+  WriteTree(a.output, format, Dot(p.trees, s.scene, x, y, a.maxNodes));
   const Colour c = p.radiance;
   std::fprintf(stderr,
                "glint tree: pixel (%d, %d): %zu ray nodes, radiance %.4g %.4g %.4g; wrote %s\n", x,

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <arpa/inet.h>
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -43,7 +44,8 @@ void SendError(httplib::Response& res, const std::string& message, int status = 
 nlohmann::json State(const LiveRender& live) {
   const std::shared_ptr<const LiveJob> job = live.Job();
   const std::shared_ptr<const LiveFrame> frame = live.Frame();
-  nlohmann::json j = {{"generation", job->generation}, {"abandoned", live.Abandoned()}};
+  nlohmann::json j = {
+      {"generation", job->generation}, {"abandoned", live.Abandoned()}, {"status", live.Status()}};
   if (frame && frame->generation == job->generation) {
     const double seconds = frame->seconds > 0.0 ? frame->seconds : 1e-9;
     j["frame"] = {{"id", frame->id},
@@ -68,15 +70,59 @@ int IntParam(const httplib::Request& req, const char* key) {
 // The settings of the current render and what the page needs to show them.
 nlohmann::json Settings(const LiveRender& live) {
   const std::shared_ptr<const LiveJob> job = live.Job();
-  return {{"scene", std::filesystem::path(job->args.scene).filename().string()},
-          {"generation", job->generation},
-          {"width", job->setup.width},
-          {"height", job->setup.height},
-          {"threads", job->setup.threads},
-          {"exposure", job->setup.exposure},
-          {"settings", SettingsJson(job->args)},
-          {"tunables", job->tunables},
-          {"reference", live.Reference().has_value()}};
+  return {{"scene", job->args.scene},  // as the command line gave it
+          {"generation", job->generation},   {"width", job->setup.width},
+          {"height", job->setup.height},     {"threads", job->setup.threads},
+          {"exposure", job->setup.exposure}, {"settings", SettingsJson(job->args)},
+          {"tunables", job->tunables},       {"reference", live.Reference().has_value()}};
+}
+
+// The largest part of `query` that renders: each setting is tried on top of those kept,
+// and the ones refused are tried again once more have been kept (walls=diffuse comes good
+// after mode=mc, whatever their order). A --set refused falls back to the value the
+// current render has for the same pointer, so that a bad slider value keeps the others.
+QueryParams GoodSettings(const RenderArgs& base, const RenderArgs& current,
+                         const QueryParams& query) {
+  QueryParams items = query;
+  QueryParams kept;
+  const bool sets =
+      std::any_of(query.begin(), query.end(), [](const auto& item) { return item.first == "set"; });
+  if (sets) kept.emplace_back("set", "");  // the query's list replaces the command line's
+  std::vector<std::string> fallback(items.size());
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (items[i].first != "set" || items[i].second.empty()) continue;
+    const std::string pointer = items[i].second.substr(0, items[i].second.find('=') + 1);
+    for (const std::string& o : current.overrides) {
+      if (o.rfind(pointer, 0) == 0 && o != items[i].second) fallback[i] = o;
+    }
+  }
+  const auto renders = [&](const QueryParams& trial) {
+    try {
+      LiveRender::Check(ArgsFromQuery(base, trial));
+      return true;
+    } catch (const InputError&) {
+      return false;
+    }
+  };
+  std::vector<bool> taken(items.size(), false);
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      if (taken[i]) continue;
+      QueryParams trial = kept;
+      trial.push_back(items[i]);
+      bool ok = renders(trial);
+      if (!ok && !fallback[i].empty()) {
+        trial.back().second = fallback[i];
+        ok = renders(trial);
+      }
+      if (!ok) continue;
+      kept = std::move(trial);
+      taken[i] = true;
+      grew = true;
+    }
+  }
+  return kept;
 }
 
 // The page's assets, its state and its settings.
@@ -89,6 +135,7 @@ void PageRoutes(httplib::Server& server, LiveRender& live, const RenderArgs& bas
                });
   }
   server.Get("/api/state", [&live](const httplib::Request&, httplib::Response& res) {
+    live.Asked();
     SendJson(res, State(live));
   });
   server.Get("/api/settings", [&live](const httplib::Request&, httplib::Response& res) {
@@ -96,10 +143,17 @@ void PageRoutes(httplib::Server& server, LiveRender& live, const RenderArgs& bas
   });
   // New settings, as the body of a form (the page's URL query).
   server.Post("/api/settings", [&live, base](const httplib::Request& req, httplib::Response& res) {
+    const QueryParams query = ParseQuery(req.body);
     try {
-      live.Apply(ArgsFromQuery(base, ParseQuery(req.body)));
+      live.Apply(ArgsFromQuery(base, query));
     } catch (const InputError& e) {
-      return SendError(res, e.what());
+      // A bad value never drops the others: apply what is good, say what is not.
+      try {
+        live.Apply(ArgsFromQuery(base, GoodSettings(base, live.Job()->args, query)));
+      } catch (const InputError&) {  // NOLINT(bugprone-empty-catch): the first error says it
+      }
+      nlohmann::json body = {{"error", e.what()}, {"applied", Settings(live)}};
+      return SendJson(res, body, 400);
     }
     SendJson(res, Settings(live));
   });
@@ -108,6 +162,7 @@ void PageRoutes(httplib::Server& server, LiveRender& live, const RenderArgs& bas
 // The images: the current frame and the reference, for the page (RGBE).
 void ImageRoutes(httplib::Server& server, LiveRender& live) {
   server.Get("/api/frame", [&live](const httplib::Request&, httplib::Response& res) {
+    live.Asked();
     const std::shared_ptr<const LiveFrame> frame = live.Frame();
     if (!frame) return SendError(res, "no frame yet", 404);
     res.set_header("Cache-Control", "no-store");
@@ -240,7 +295,7 @@ int RunView(const ViewArgs& a) {
   }
   std::signal(SIGPIPE, SIG_IGN);  // a browser that goes away mid-answer is not an error
   const std::atomic<bool>& interrupted = InstallInterruptHandlers();
-  LiveRender live(a.render, std::move(reference));
+  LiveRender live(a.render, std::move(reference), a.limits);
   PageRoutes(server, live, a.render);
   ImageRoutes(server, live);
   InspectAndSaveRoutes(server, live);

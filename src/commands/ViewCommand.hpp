@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "commands/LiveRender.hpp"
 #include "job/RenderJob.hpp"
 
 namespace glint {
@@ -15,6 +16,7 @@ struct ViewArgs {
   std::string host = "127.0.0.1";  // loopback unless the user says otherwise
   int port = 8765;                 // 0: any free port
   std::string reference;           // PFM or EXR for the compare views
+  LiveLimits limits;               // --time, --max-spp
 };
 
 // Serves until SIGINT or SIGTERM; 0 then, 1 for bad input or a port that cannot be had.

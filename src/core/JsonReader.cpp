@@ -2,16 +2,11 @@
 
 #include <sstream>
 
+#include "glint/core/Format.hpp"
+
 namespace glint {
 
 namespace {
-
-std::string FormatNumber(double x) {
-  std::ostringstream out;
-  out.precision(10);
-  out << x;
-  return out.str();
-}
 
 std::string JoinQuoted(std::initializer_list<const char*> words) {
   std::string out;
@@ -93,6 +88,10 @@ JsonReader::JsonReader(const nlohmann::json& value, std::string file, std::strin
 void JsonReader::Fail(const char* key, const std::string& expected,
                       const std::string& found) const {
   throw InputError(file_ + ": " + PathOf(key) + ": expected " + expected + ", found " + found);
+}
+
+void JsonReader::Refuse(const char* key, const std::string& sentence) const {
+  throw InputError(file_ + ": " + PathOf(key) + ": " + sentence);
 }
 
 const nlohmann::json& JsonReader::Field(const char* key) const {

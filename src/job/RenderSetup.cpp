@@ -58,6 +58,33 @@ void CheckMemory(int width, int height, int threads) {
   }
 }
 
+// A mode needs its own lights: Monte Carlo the area light, Whitted the point lights.
+// Without them the image would be black, which is never what a student meant.
+void CheckModeLights(const Scene& scene, const std::string& mode, const std::string& file) {
+  if (mode == "mc") {
+    if (!scene.light) {
+      throw InputError(file +
+                       ": Monte Carlo mode is lit by the area_light, and the scene has none "
+                       "(add one, see docs/scene-format.md, or render with --mode whitted)");
+    }
+    if (MaxComponent(scene.light->Radiance()) <= 0.0) {
+      std::fprintf(stderr,
+                   "glint: warning: %s: the area_light's radiance is 0: the Monte Carlo "
+                   "image will be black\n",
+                   file.c_str());
+    }
+    return;
+  }
+  bool lit = false;
+  for (const PointLight& p : scene.pointLights) lit = lit || MaxComponent(p.intensity) > 0.0;
+  if (!lit) {
+    std::fprintf(stderr,
+                 "glint: warning: %s: Whitted mode is lit by the point_lights, and the scene "
+                 "has %s: the image will be black (the area_light lights --mode mc only)\n",
+                 file.c_str(), scene.pointLights.empty() ? "none" : "only ones of intensity 0");
+  }
+}
+
 }  // namespace
 
 // Refuses an output whose folder is missing or cannot take a new file: it tries, with
@@ -104,6 +131,7 @@ RenderSetup Prepare(const RenderArgs& args, bool checkOutputs) {
   s.scene = LoadScene(args.scene, args.overrides);
   for (const std::string& w : s.scene.warnings)
     std::fprintf(stderr, "glint: warning: %s\n", w.c_str());
+  CheckModeLights(s.scene, args.mode, args.scene);
   s.mode = args.mode == "mc" ? s.scene.mc : s.scene.whitted;
   s.width = s.scene.camera.width;
   s.height = s.scene.camera.height;

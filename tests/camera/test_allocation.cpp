@@ -54,7 +54,7 @@ long AllocationsWhileRendering(const Integrator& integrator, const Camera& camer
 
 TEST(Allocation, NoHeapAllocationPerRayOnTheHotPath) {
   const Scene scene = testing::CanonicalScene();
-  const Camera camera(scene.wall, scene.camera.eye, 32, 32);
+  const Camera camera(scene.wall, scene.camera, 32, 32);
   EXPECT_EQ(AllocationsWhileRendering(WhittedIntegrator(scene, 10), camera, 4), 0);
   MonteCarloOptions o;
   o.walls = MonteCarloOptions::Walls::Diffuse;

@@ -44,6 +44,31 @@ TEST(Camera, SetUpRuleForOtherEyesAndRooms) {
   CheckSetUpRule(Wall(vec3(1, 2, 3), 2.0, {}), vec3(2, 3, 5.5), 0.5);
 }
 
+// The design: "change the distance from the eye to the view plane while you keep the
+// view plane size unchanged". The plane keeps its size; the field of view follows.
+TEST(Camera, ViewPlaneDistanceKeepsThePlaneSize) {
+  for (const double d : {0.75, 1.5, 3.0}) {
+    const Camera camera(Wall(), vec3(0.5, 0.5, 2.5), 64, 32, d);
+    EXPECT_EQ(camera.ViewPlaneDistance(), d);
+    EXPECT_EQ(camera.HalfHeight(), 0.5);
+    EXPECT_EQ(camera.HalfWidth(), 1.0);
+    // The top-left corner of the plane is (-1, 0.5) around the axis, at distance d.
+    const vec3 corner = camera.ViewPlanePoint(0, 0);
+    EXPECT_NEAR(corner.x, -0.5, 1e-15);
+    EXPECT_NEAR(corner.y, 1.0, 1e-15);
+    EXPECT_NEAR(corner.z, 2.5 - d, 1e-15);
+  }
+  // Twice the distance, half the tangent of the half-angle: 2 atan(1/6) vertically.
+  const Camera narrow(Wall(), vec3(0.5, 0.5, 2.5), 64, 64, 3.0);
+  const vec3 top = narrow.DirectionThrough(32, 0);
+  EXPECT_NEAR(top.y / -top.z, 1.0 / 6.0, 1e-14);
+  // 0 is the set-up rule's, and a scene's settings carry the distance.
+  EXPECT_EQ(Camera(Wall(), vec3(0.5, 0.5, 2.5), 8, 8, 0.0).ViewPlaneDistance(), 1.5);
+  const Scene scene = testing::CanonicalScene({"/camera/view_plane_distance=2.25"});
+  EXPECT_EQ(Camera(scene.wall, scene.camera, 8, 8).ViewPlaneDistance(), 2.25);
+  EXPECT_THROW(Camera(Wall(), vec3(0.5, 0.5, 2.5), 8, 8, -1.0), std::invalid_argument);
+}
+
 TEST(Camera, EyeOffTheAxisIsRejected) {
   EXPECT_THROW(Camera(Wall(), vec3(0.4, 0.5, 2.5), 8, 8), std::invalid_argument);
   EXPECT_THROW(Camera(Wall(), vec3(0.5, 0.5, 0.9), 8, 8), std::invalid_argument);
@@ -63,8 +88,8 @@ Image ExpectSameForOneAndTwoThreads(const Scene& scene, const Integrator& integr
   RenderOptions options;
   options.raysPerPixel = spp;
   options.seed = seed;
-  Camera one(scene.wall, scene.camera.eye, width, height);
-  Camera two(scene.wall, scene.camera.eye, width, height);
+  Camera one(scene.wall, scene.camera, width, height);
+  Camera two(scene.wall, scene.camera, width, height);
   options.threads = 1;
   const RenderStats s1 = one.Render(integrator, options);
   options.threads = 2;

@@ -390,7 +390,7 @@ TEST(Sampler, SobolPassesContinueOneSequenceAndImagesDoNotDependOnThreads) {
   const Scene scene = CanonicalScene();
   const MonteCarloIntegrator integrator(scene, {});
   const auto twoPasses = [&](SamplerKind kind) {
-    Camera camera(scene.wall, scene.camera.eye, 16, 16);
+    Camera camera(scene.wall, scene.camera, 16, 16);
     RenderOptions options;
     options.sampler = kind;
     options.raysPerPixel = 8;

@@ -107,14 +107,20 @@ TEST(SceneLoader, ErrorsNameTheFileTheFieldTheExpectationAndTheValue) {
   ExpectError({"/area_light/center=[0.5, 0.9, 0.5]"},
               "/area_light/center: expected a point in the ceiling plane");
   ExpectError({"/point_lights/0/position=[0.5, 1.5, 0.5]"},
-              "/point_lights/0/position: expected an object inside the room");
-  ExpectError({"/room/walls/1/side=floor"}, "/room/walls/1/side: expected one of \"ceiling\"");
+              "/point_lights/0/position: expected a point light inside the room [0, 1]^3, found "
+              "one at (0.5, 1.5, 0.5)");
+  ExpectError({"/room/walls/1/side=floor"},
+              "/room/walls/1/side: expected \"ceiling\" (wall 2; the walls come in the fixed "
+              "order left, ceiling, right, floor, back), found the string \"floor\"");
   ExpectError({"/objects/0/whitted_diffuse=0.6", "/objects/0/whitted_specular=0.6"}, "sum to 1");
   ExpectError({"/whitted/spp=0"}, "/whitted/spp: expected a whole number in [1, 1048576]");
   ExpectError({"/objects/0/colour=[1,1,1]"}, "unknown field \"colour\"");
   ExpectError({"/objects/2/position=[0.8, 0.0, 0.06]"},
-              "/objects/2/position: expected an object inside the room");
-  ExpectError({"/area_light/side=1.5"}, "/area_light/side: expected an object inside the room");
+              "/objects/2/position: expected a cube inside the room [0, 1]^3, found one from "
+              "(0.8, 0, 0.06) to (1.08, 0.28, 0.34)");
+  ExpectError({"/area_light/side=1.5"},
+              "/area_light/side: expected a light inside the ceiling, x in [0, 1] and z in "
+              "[0, 1], found one with x from -0.25 to 1.25");
   ExpectError({"/area_light/radiance=[50, -1, 50]"},
               "/area_light/radiance: expected an array of 3 numbers >= 0");
   ExpectError({"/point_lights/1/intensity=[1, 1]"},
@@ -128,11 +134,34 @@ TEST(SceneLoader, ErrorsNameTheFileTheFieldTheExpectationAndTheValue) {
   ExpectError({"/objects/1/material=wood"},
               "/objects/1/material: expected one of \"phong\", \"mirror\", \"glass\" or "
               "\"lambertian\"");
-  // A lambertian object reflects rho/pi like a wall: a Phong field on it means nothing.
+  // One rule for every material: a field it does not use is refused, with the reason.
   ExpectError({"/objects/0/material=lambertian"},
-              "/objects/0/exponent: expected no such field with material \"lambertian\"");
+              "/objects/0/exponent: material \"lambertian\" has no field \"exponent\" (it "
+              "reflects rho/pi, as a wall, and has no highlight): delete it");
   ExpectError({"/objects/1/material=lambertian", "/objects/1/reflectance=[0.5, 0.5, 0.5]"},
-              "/objects/1/ior: expected no such field with material \"lambertian\"");
+              "/objects/1/ior: material \"lambertian\" has no field \"ior\"");
+  ExpectError({"/objects/1/reflectance=[0.5, 0.5, 0.5]"},
+              "/objects/1/reflectance: material \"glass\" has no field \"reflectance\" (glass "
+              "is clear");
+  ExpectError({"/objects/1/reflectance=[0.5, 0.5, 0.5]"},
+              "): delete it (with --set: /objects/1/reflectance=null)");
+  ExpectError({"/objects/0/ior=1.5"},
+              "/objects/0/ior: material \"phong\" has no field \"ior\" (only glass refracts)");
+  ExpectError({"/objects/0/material=mirror", "/objects/0/ior=1.5"},
+              "/objects/0/ior: material \"mirror\" has no field \"ior\"");
+  // Numbers as people write them, computed ones rounded: 0.6 + 0.5, not 1.100000.
+  ExpectError({"/objects/0/whitted_diffuse=0.6", "/objects/0/whitted_specular=0.5"},
+              "found 0.6 + 0.5");
+  ExpectError({"/camera/eye=[0.5, 0.6, 2.5]"},
+              "/camera/eye: expected a point on the axis of the back wall in front of the room, "
+              "(0.5, 0.5, z > 1), found (0.5, 0.6, 2.5)");
+  ExpectError({"/objects/0/center=[0.1, 0.18, 0.4]"},
+              "found one from (-0.08, 0, 0.22) to (0.28, 0.36, 0.58)");
+  // Two parts with one name would make messages and glint tree ambiguous.
+  ExpectError({"/objects/2/id=\"O1\""},
+              "/objects/2/id: expected an id that no other part of the scene has, found \"O1\", "
+              "already the id of /objects/0");
+  ExpectError({"/point_lights/1/id=\"W3\""}, "already the id of /room/walls/2");
   ExpectError({"/description=7"}, "/description: expected a non-empty string, found the number 7");
 }
 
@@ -143,6 +172,67 @@ TEST(SceneLoader, SyntaxErrorsGiveLineAndColumn) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("bad-syntax.json:5:"), std::string::npos) << e.what();
   }
+}
+
+std::string ParseError(const std::string& text) {
+  try {
+    ParseJsonText(text, "s.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+TEST(SceneLoader, CommentsAndTrailingCommasGetWhereAndAPlainSentence) {
+  EXPECT_EQ(ParseError("{\n  // the room\n  \"room\": 1\n}"),
+            "s.json:2:3: a comment, and JSON has none: delete it (the \"description\" field "
+            "holds free text)");
+  EXPECT_EQ(ParseError("{\"a\": 1 /* why */}"),
+            "s.json:1:9: a comment, and JSON has none: delete it (the \"description\" field "
+            "holds free text)");
+  EXPECT_EQ(ParseError("{\"a\": [1, 2,\n ],\n \"b\": 3}"),
+            "s.json:1:12: a comma after the last element of a list or object, which JSON does "
+            "not allow: delete it");
+  EXPECT_EQ(ParseError("{\"a\": 1,}"),
+            "s.json:1:8: a comma after the last element of a list or object, which JSON does "
+            "not allow: delete it");
+  // Slashes and commas inside strings are text: the real mistake is reported.
+  EXPECT_EQ(ParseError("{\"description\": \"see http://x, ]\", \"a\": 1,}"),
+            "s.json:1:42: a comma after the last element of a list or object, which JSON does "
+            "not allow: delete it");
+  // Any other syntax error keeps the parser's words, with line and column.
+  EXPECT_NE(ParseError("{\"a\": tru}").find("s.json:1:10: invalid JSON: "), std::string::npos);
+  EXPECT_EQ(ParseError("{\"a\": \"//\"}"), "accepted");
+}
+
+TEST(SceneLoader, ADefaultIdTakenByAnotherPartIsRefused) {
+  nlohmann::json document = LoadSceneDocument(SourcePath("scenes/cornell.json"), {});
+  document["objects"][1].erase("id");
+  document["objects"][0]["id"] = "O2";
+  try {
+    SceneFromJson(document, "cornell.json");
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "cornell.json: /objects/1/id: expected an id that no other part of the scene "
+                 "has, found nothing, and the default \"O2\", already the id of /objects/0");
+  }
+}
+
+TEST(SceneLoader, NullRemovesAField) {
+  // A phong cube made glass: its reflectance must go, and --set can take it away.
+  const Scene s = CanonicalScene(
+      {"/objects/2/material=glass", "/objects/2/ior=1.5", "/objects/2/reflectance=null"});
+  EXPECT_EQ(s.cubes[0].GetMaterial().type, MaterialType::Glass);
+}
+
+TEST(SceneLoader, PointLightsAreNamedP1P2ByDefault) {
+  nlohmann::json document = LoadSceneDocument(SourcePath("scenes/cornell.json"), {});
+  for (nlohmann::json& p : document["point_lights"]) p.erase("id");
+  const Scene s = SceneFromJson(document, "cornell.json");
+  ASSERT_EQ(s.pointLights.size(), 2u);
+  EXPECT_EQ(s.ObjectName(s.pointLights[0].object), "P1");
+  EXPECT_EQ(s.ObjectName(s.pointLights[1].object), "P2");
 }
 
 TEST(SceneLoader, BadOverridesAreRejected) {

@@ -31,7 +31,7 @@ inline double PolygonCosineIntegral(vec3 p, vec3 n, const std::vector<vec3>& ver
 // the path `glint render` takes: the pixels' shafts prepared (PixelShaft), one pass.
 inline Image RenderWithSampler(const Scene& scene, const Integrator& integrator, SamplerKind kind,
                                int size, int spp, std::uint64_t seed, int threads = 0) {
-  Camera camera(scene.wall, scene.camera.eye, size, size);
+  Camera camera(scene.wall, scene.camera, size, size);
   camera.PrepareShafts(scene, integrator.ShadowLights(), threads);
   RenderOptions options;
   options.sampler = kind;
@@ -60,7 +60,7 @@ inline BlockEstimates RenderBlocks(const Scene& scene, MonteCarloOptions options
   const int nb = size / block;
   BlockEstimates out;
   out.blocks.resize(static_cast<std::size_t>(nb * nb * 3));
-  Camera camera(scene.wall, scene.camera.eye, size, size);
+  Camera camera(scene.wall, scene.camera, size, size);
   camera.PrepareShafts(scene, integrator.ShadowLights());  // as glint render does
   const Image pixelWeights = PilotWeights(pilot);
   for (int r = 0; r < runs; ++r) {

@@ -15,13 +15,14 @@ if ! command -v blender > /dev/null; then
   exit 1
 fi
 status=0
-check() {  # scene walls glint_spp cycles_spp
+check() {  # scene (in scenes/, or a path) walls glint_spp cycles_spp
   local scene=$1 walls=$2 gspp=$3 cspp=$4 name
   name=$(basename "$scene" .json)-$walls
+  case $scene in /*) ;; *) scene=$src/scenes/$scene ;; esac
   for seed in 1 2; do
-    "$glint" render "$src/scenes/$scene" --mode mc --walls "$walls" --size 64 --spp "$gspp" \
+    "$glint" render "$scene" --mode mc --walls "$walls" --size 64 --spp "$gspp" \
       --seed "$seed" -q -o "$name-glint-$seed.pfm"
-    "$src/tools/cycles-render" "$src/scenes/$scene" --mode mc --walls "$walls" --size 64 \
+    "$src/tools/cycles-render" "$scene" --mode mc --walls "$walls" --size 64 \
       --spp "$cspp" --seed "$seed" -o "$name-cycles-$seed.pfm"
   done
   echo "$name:"
@@ -34,6 +35,10 @@ check cornell-mirror.json terminal 1024 2048
 check cornell-mirror.json diffuse 4096 2048
 check cornell-lambert.json terminal 1024 2048
 check cornell-lambert.json diffuse 4096 2048
+# The view plane twice as far (its size kept): half the field of view, in both renderers.
+python3 -c 'import json, sys; s = json.load(open(sys.argv[1])); s["camera"]["view_plane_distance"] = 3.0; json.dump(s, open(sys.argv[2], "w"))' \
+  "$src/scenes/cornell-mirror.json" "$work/narrow.json"
+check "$work/narrow.json" terminal 1024 2048
 
 # Every Blender property goes through a helper that refuses unknown names.
 blender -b --factory-startup --python-exit-code 1 -P "$src/tests/tools/blender_set_property.py" -- \

@@ -539,7 +539,7 @@ TEST(MonteCarlo, NoNonFiniteSamplesInAnyMode) {
         o.fresnel = glass == O::Glass::Split ? O::Fresnel::Exact : O::Fresnel::SmallAngle;
         o.branches = strategy == O::Strategy::Mis ? 2 : 1;
         const MonteCarloIntegrator integrator(scene, o);
-        Camera camera(scene.wall, scene.camera.eye, 24, 24);
+        Camera camera(scene.wall, scene.camera, 24, 24);
         RenderOptions ro;
         ro.raysPerPixel = 4;
         const RenderStats stats = camera.Render(integrator, ro);

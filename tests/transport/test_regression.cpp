@@ -57,7 +57,7 @@ void CompareWithReference(const Image& image, const std::string& name, double me
 // Renders the canonical scene at size x size with seed 1 and the command line's default
 // sampler (sobol); no sample may be NaN or Inf.
 Image RenderCanonical(const Scene& scene, const Integrator& integrator, int size, int spp) {
-  Camera camera(scene.wall, scene.camera.eye, size, size);
+  Camera camera(scene.wall, scene.camera, size, size);
   camera.PrepareShafts(scene, integrator.ShadowLights());  // as the renderer does
   RenderOptions options;
   options.raysPerPixel = spp;

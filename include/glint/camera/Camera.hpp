@@ -14,11 +14,10 @@
 #include "glint/camera/Pixel.hpp"
 #include "glint/camera/RenderStats.hpp"
 #include "glint/image/Image.hpp"
+#include "glint/scene/Scene.hpp"
 #include "glint/scene/Wall.hpp"
 
 namespace glint {
-
-class Scene;
 
 struct RenderOptions {
   int raysPerPixel = 1;  // in this pass
@@ -42,8 +41,15 @@ struct RenderOptions {
 class Camera {
  public:
   // Throws std::invalid_argument if the eye is not on the axis of the room in front of
-  // its open side, or the resolution is not positive.
-  Camera(const Wall& room, vec3 eye, int width, int height);
+  // its open side, or the resolution is not positive. `viewPlaneDistance` 0 is the
+  // set-up rule's; another moves the view plane (its size fixed) nearer or farther,
+  // which narrows or widens the field of view, as the design allows.
+  Camera(const Wall& room, vec3 eye, int width, int height, double viewPlaneDistance = 0.0);
+  // The camera a scene file describes, at width x height pixels.
+  Camera(const Wall& room, const CameraSettings& settings, int width, int height)
+      : Camera(room, settings.eye, width, height, settings.viewPlaneDistance) {}
+  // The set-up rule's distance from the eye to the view plane: to the room's front.
+  static double SetUpDistance(const Wall& room, vec3 eye);
 
   // The first half of the set-up rule: the eye lies on the axis through the centre of
   // the back wall, orthogonal to it, in front of the room's open side.

@@ -59,7 +59,11 @@ class JsonReader {
 
   [[noreturn]] void Fail(const char* key, const std::string& expected,
                          const std::string& found) const;
+  // "file: /path/key: sentence", for a field that is there but must not be.
+  [[noreturn]] void Refuse(const char* key, const std::string& sentence) const;
   std::string PathOf(const char* key) const { return path_ + "/" + key; }
+  // The JSON pointer of this object ("" for the document itself).
+  const std::string& Path() const { return path_; }
   const std::string& File() const { return file_; }
 
  private:

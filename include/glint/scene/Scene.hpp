@@ -18,6 +18,9 @@ namespace glint {
 
 struct CameraSettings {
   vec3 eye{0.5, 0.5, 2.5};
+  // From the eye to the view plane, whose size stays the room's cross-section; 0: the
+  // set-up rule's distance, which puts the plane in the room's open front.
+  double viewPlaneDistance = 0.0;
   int width = 512;
   int height = 512;
 };

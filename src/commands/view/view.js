@@ -216,6 +216,11 @@ async function send(q) {
   const body = await res.json();
   if (!res.ok) {
     message(body.error || `the server answered ${res.status}`);
+    // The server kept the query's good settings (a bad value never drops the others).
+    if (body.applied) {
+      showSettings(body.applied);
+      return 'partial';
+    }
     return false;
   }
   message('');
@@ -320,10 +325,11 @@ async function poll() {
     }
     if (!f) $('status').textContent = 'rendering the first pass';
     else {
+      const rest = state.status === 'done' ? ' (done: the --time or --max-spp limit was reached)' : '';
       const fps = view.drawn.length / 2;
       const err = f.error.length ? `, relative MSE ${f.error[f.error.length - 1][1].toExponential(2)}` : '';
       $('status').textContent = `${f.passes} passes, ${f.spp} rays/pixel, ${f.seconds.toFixed(1)} s, ` +
-          `${f.mrays_per_second.toFixed(1)} Mrays/s traced, ${fps.toFixed(1)} frames/s${err}`;
+          `${f.mrays_per_second.toFixed(1)} Mrays/s traced, ${fps.toFixed(1)} frames/s${err}${rest}`;
     }
     document.body.dataset.frame = view.frameId;  // for the browser tests
     document.body.dataset.generation = view.generation;

@@ -153,8 +153,28 @@ try:
                          ("colour=red", "unknown setting 'colour'")]:
         status, body = server.json("/api/settings", query)
         check(status == 400 and words in body.get("error", ""), f"POST {query}: {body}")
-    status, state = server.json("/api/state")
-    check(status == 200 and state["generation"] == 1, "bad settings left the render alone")
+    # A bad value never drops the query's good ones (#26): mode=mc is applied.
+    status, body = server.json("/api/settings", "set=/objects/1/ior=0.5&mode=mc")
+    applied = body.get("applied", {})
+    check(status == 400 and "/objects/1/ior" in body.get("error", "") and
+          applied.get("settings", {}).get("mode") == "mc" and applied["settings"]["set"] == [],
+          f"a bad --set keeps mode=mc: {applied.get('settings')}")
+    status, body = server.json("/api/settings", "walls=diffuse&mode=mc&branches=0")
+    check(status == 400 and body["applied"]["settings"]["walls"] == "diffuse",
+          f"walls=diffuse before mode=mc is kept: {body['applied']['settings']}")
+    check(body["applied"]["scene"] == SCENE,
+          f"the page's command line has the scene as given: {body['applied']['scene']}")
+    # A slider's bad value falls back to its last good one; the other --set stay.
+    server.json("/api/settings", "mode=mc&set=/objects/1/ior=1.1&set=/objects/0/exponent=20")
+    status, body = server.json("/api/settings",
+                               "mode=mc&set=/objects/1/ior=0.5&set=/objects/0/exponent=20")
+    check(status == 400 and body["applied"]["settings"]["set"] ==
+          ["/objects/1/ior=1.1", "/objects/0/exponent=20"],
+          f"a bad slider value keeps the last good one: {body['applied']['settings']['set']}")
+    status, body = server.json("/api/settings", "mode=whitted&set=")
+    check(status == 200, f"back to Whitted: {status}")
+    state = server.wait_for_frame()
+    generation = state["generation"]
 
     # Two clients see the same render; a change by one is the other's too.
     results = []
@@ -167,13 +187,58 @@ try:
     check(len(results) == 2 and results[0]["generation"] == results[1]["generation"],
           "two clients at once: the same generation")
     status, body = server.json("/api/settings", "mode=mc&set=/objects/1/ior=1.3")
-    check(status == 200 and body["generation"] == 2 and body["settings"]["set"] ==
+    check(status == 200 and body["generation"] == generation + 1 and body["settings"]["set"] ==
           ["/objects/1/ior=1.3"], f"a change: generation {body.get('generation')}")
     state = server.wait_for_frame(after=state["frame"]["id"])
-    check(state["generation"] == 2, "the other client sees the new generation")
+    check(state["generation"] == generation + 1, "the other client sees the new generation")
 finally:
     code, seconds, rest = server.stop(signal.SIGTERM)
 check(code == 0 and seconds < 1.0, f"SIGTERM: exit {code} after {seconds:.3f} s")
+
+# With no page asking, the render rests after 10 s: the process goes back to idle (#26).
+server = Server(GLINT, SCENE, "--size", "32", "--threads", "1")
+try:
+    server.wait_for_frame()
+    time.sleep(11.0)  # LiveRender::kIdleSeconds and a margin; nothing asks meanwhile
+
+    def cpu_seconds():
+        with open(f"/proc/{server.proc.pid}/stat") as f:
+            fields = f.read().rsplit(")", 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+    before = cpu_seconds()
+    time.sleep(2.0)
+    idle = cpu_seconds() - before
+    check(idle < 0.1, f"resting with no page: {idle:.3f} s of CPU in 2 s")
+    _, state = server.json("/api/state")  # a page asks: rendering resumes
+    frame = state["frame"]["id"]
+    state = server.wait_for_frame(after=frame)
+    check(state["status"] == "rendering", f"a page asked: {state['status']}, frame {frame} -> "
+          f"{state['frame']['id']}")
+finally:
+    server.stop(signal.SIGTERM)
+
+# --max-spp and --time stop the accumulation; the server stays (#26).
+for flags, what in [(["--max-spp", "6"], "spp"), (["--time", "0.6"], "seconds")]:
+    server = Server(GLINT, SCENE, "--size", "32", "--threads", "1", *flags)
+    try:
+        deadline = time.time() + 20
+        state = {}
+        while time.time() < deadline:
+            _, state = server.json("/api/state")
+            if state.get("status") == "done":
+                break
+            time.sleep(0.1)
+        frame = state.get("frame", {})
+        ok = state.get("status") == "done" and (
+            frame.get("spp") == 6 if what == "spp" else 0.6 <= frame.get("seconds", 0) < 3.0)
+        check(ok, f"{' '.join(flags)}: status {state.get('status')}, {frame.get('spp')} rays "
+              f"per pixel, {frame.get('seconds')} s")
+        time.sleep(0.5)
+        _, later = server.json("/api/state")
+        check(later["frame"]["id"] == frame.get("id"), f"{' '.join(flags)}: no pass after done")
+    finally:
+        server.stop(signal.SIGTERM)
 
 # Long passes are abandoned, not finished, when the settings change.
 server = Server(GLINT, SCENE, "--mode", "mc", "--walls", "diffuse", "--size", "64", "--spp",

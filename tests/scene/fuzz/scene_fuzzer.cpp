@@ -15,7 +15,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
     const Scene scene = SceneFromJson(ParseJsonText(text, "fuzz.json"), "fuzz.json");
-    Camera camera(scene.wall, scene.camera.eye, 4, 4);
+    Camera camera(scene.wall, scene.camera, 4, 4);
     RenderOptions options;
     options.threads = 1;
     camera.Render(WhittedIntegrator(scene, scene.whitted.maxDepth), options);

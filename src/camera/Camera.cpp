@@ -8,7 +8,6 @@
 #include <atomic>
 #include <stdexcept>
 
-#include "glint/image/ImageIO.hpp"
 #include "glint/scene/Scene.hpp"
 
 namespace glint {
@@ -35,7 +34,8 @@ bool Camera::EyeOnAxis(const Wall& room, vec3 eye) {
   return room.EyeOnAxis(eye);
 }
 
-double Camera::SetUpDistance(const Wall& room, vec3 eye) {
+double Camera::ViewPlaneDistanceFor(const Wall& room, vec3 eye, double given) {
+  if (given > 0.0) return given;
   // The ray from the eye to a front corner, (c.x +- s/2, c.y +- s/2, front), must pass
   // through the view plane's corner (+-halfWidth, +-halfHeight) at distance d. With the
   // view plane the size of the room's cross-section, similar triangles give
@@ -56,7 +56,7 @@ Camera::Camera(const Wall& room, vec3 eye, int width, int height, double viewPla
     throw std::invalid_argument("the view plane distance must be positive (0: the set-up rule)");
   }
   viewDirection_ = glm::normalize(back - eye);
-  viewPlaneDistance_ = viewPlaneDistance > 0.0 ? viewPlaneDistance : SetUpDistance(room, eye);
+  viewPlaneDistance_ = ViewPlaneDistanceFor(room, eye, viewPlaneDistance);
   halfHeight_ = 0.5 * room.Size();
   // A non-square image keeps square pixels: the plane widens with the aspect ratio.
   halfWidth_ = halfHeight_ * static_cast<double>(width) / static_cast<double>(height);
@@ -170,10 +170,6 @@ Image Camera::ToImage(int threads) const {
              static_cast<int>(i / static_cast<std::size_t>(width_))) = p.Radiance();
   }
   return image;
-}
-
-void Camera::Save(const std::string& path, double exposure) const {
-  WriteImage(ToImage(), path, exposure);
 }
 
 }  // namespace glint

@@ -38,7 +38,7 @@ std::string NearestFlag(const CLI::App& command, const std::string& typed) {
   std::size_t bestDistance = std::max<std::size_t>(2, typed.size() / 3) + 1;
   const auto consider = [&](const std::string& word, const std::string& flag) {
     const std::size_t d = EditDistance(typed, word);
-    if (d < bestDistance && HasFlag(command, flag)) {
+    if (d < bestDistance) {
       bestDistance = d;
       best = flag;
     }
@@ -46,7 +46,9 @@ std::string NearestFlag(const CLI::App& command, const std::string& typed) {
   for (const CLI::Option* o : command.get_options()) {
     for (const std::string& name : o->get_lnames()) consider(name, "--" + name);
   }
-  for (const auto& [word, flag] : kSynonyms) consider(word, flag);
+  for (const auto& [word, flag] : kSynonyms) {
+    if (HasFlag(command, flag)) consider(word, flag);
+  }
   return best;
 }
 

@@ -26,6 +26,13 @@ void Thin(std::vector<std::array<double, 2>>& points) {
   points.resize(kept);
 }
 
+// The steady clock in nanoseconds, for an atomic.
+std::int64_t Now() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(
+             std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
 }  // namespace
 
 std::string RgbePixels(const Image& image) {
@@ -45,12 +52,6 @@ std::string RgbePixels(const Image& image) {
     bytes[4 * i + 3] = static_cast<char>(static_cast<unsigned char>(e + 128));
   }
   return bytes;
-}
-
-std::int64_t Now() {
-  return std::chrono::duration_cast<std::chrono::nanoseconds>(
-             std::chrono::steady_clock::now().time_since_epoch())
-      .count();
 }
 
 LiveRender::LiveRender(const RenderArgs& args, std::optional<Image> reference, LiveLimits limits)
@@ -84,7 +85,10 @@ std::shared_ptr<const LiveJob> LiveRender::MakeJob(const RenderArgs& args,
   job->args = args;
   job->setup = Prepare(args, /*checkOutputs=*/false);
   job->document = LoadSceneDocument(args.scene, args.overrides);
-  job->tunables = Tunables(job->document);
+  const Scene& scene = job->setup.scene;
+  job->tunables = Tunables(
+      job->document,
+      Camera::ViewPlaneDistanceFor(scene.wall, scene.camera.eye, scene.camera.viewPlaneDistance));
   job->integrator = MakeIntegrator(args, job->setup);
   job->generation = generation;
   return job;
@@ -104,20 +108,21 @@ double LiveRender::SecondsSinceAsked() const {
 
 std::string LiveRender::Status() const {
   switch (status_.load()) {
-    case 1:
+    case State::Resting:
       return "resting";
-    case 2:
+    case State::Done:
       return "done";
-    default:
-      return "rendering";
+    case State::Rendering:
+      break;
   }
+  return "rendering";
 }
 
 bool LiveRender::ShouldWait(const LiveFrame& progress) {
   const bool done = (limits_.seconds > 0.0 && progress.seconds >= limits_.seconds) ||
                     (limits_.spp > 0 && progress.spp >= limits_.spp);
   const bool idle = SecondsSinceAsked() > kIdleSeconds;
-  status_ = done ? 2 : idle ? 1 : 0;
+  status_ = done ? State::Done : idle ? State::Resting : State::Rendering;
   return done || idle;
 }
 

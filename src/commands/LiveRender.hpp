@@ -101,7 +101,8 @@ class LiveRender {
   std::optional<Image> reference_;
   LiveLimits limits_;
   std::atomic<std::int64_t> lastAsked_;  // steady clock, nanoseconds
-  std::atomic<int> status_{0};           // 0 rendering, 1 resting, 2 done
+  enum class State { Rendering, Resting, Done };
+  std::atomic<State> status_{State::Rendering};
   mutable std::mutex mutex_;
   std::shared_ptr<const LiveJob> job_;
   std::shared_ptr<const LiveFrame> frame_;

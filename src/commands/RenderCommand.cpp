@@ -43,9 +43,8 @@ std::size_t MarkUnrendered(const Camera& camera, Image& image, int& rows) {
 }
 
 // What an interrupted render saved, in one line.
-void ReportInterrupted(const RenderResult& r, const std::string& partial, std::size_t unrendered,
-                       std::size_t pixels, int rows) {
-  const int signal = InterruptSignal() != 0 ? InterruptSignal() : SIGINT;
+void ReportInterrupted(const RenderResult& r, int signal, const std::string& partial,
+                       std::size_t unrendered, std::size_t pixels, int rows) {
   std::fprintf(stderr, "glint: stopped by %s after %.2f s; saved what was rendered to %s",
                signal == SIGTERM ? "SIGTERM" : "SIGINT", r.seconds, partial.c_str());
   if (unrendered > 0) {
@@ -106,9 +105,10 @@ int RunRender(const RenderArgs& args, const Cluster& cluster) {
     return kExitOutputFailed;
   }
   if (r.interrupted) {
-    ReportInterrupted(r, PartialPath(s.outputs.front()), unrendered,
+    const int signal = InterruptSignal() != 0 ? InterruptSignal() : SIGINT;
+    ReportInterrupted(r, signal, PartialPath(s.outputs.front()), unrendered,
                       static_cast<std::size_t>(s.width) * static_cast<std::size_t>(s.height), rows);
-    return 128 + (InterruptSignal() != 0 ? InterruptSignal() : SIGINT);
+    return 128 + signal;
   }
   if (!args.quiet) PrintSummary(args, s, r);
   return kExitOk;

@@ -83,17 +83,16 @@ nlohmann::json Settings(const LiveRender& live) {
 // current render has for the same pointer, so that a bad slider value keeps the others.
 QueryParams GoodSettings(const RenderArgs& base, const RenderArgs& current,
                          const QueryParams& query) {
-  QueryParams items = query;
   QueryParams kept;
   const bool sets =
       std::any_of(query.begin(), query.end(), [](const auto& item) { return item.first == "set"; });
   if (sets) kept.emplace_back("set", "");  // the query's list replaces the command line's
-  std::vector<std::string> fallback(items.size());
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    if (items[i].first != "set" || items[i].second.empty()) continue;
-    const std::string pointer = items[i].second.substr(0, items[i].second.find('=') + 1);
+  std::vector<std::string> fallback(query.size());
+  for (std::size_t i = 0; i < query.size(); ++i) {
+    if (query[i].first != "set" || query[i].second.empty()) continue;
+    const std::string pointer = query[i].second.substr(0, query[i].second.find('=') + 1);
     for (const std::string& o : current.overrides) {
-      if (o.rfind(pointer, 0) == 0 && o != items[i].second) fallback[i] = o;
+      if (o.rfind(pointer, 0) == 0 && o != query[i].second) fallback[i] = o;
     }
   }
   const auto renders = [&](const QueryParams& trial) {
@@ -104,13 +103,13 @@ QueryParams GoodSettings(const RenderArgs& base, const RenderArgs& current,
       return false;
     }
   };
-  std::vector<bool> taken(items.size(), false);
+  std::vector<bool> taken(query.size(), false);
   for (bool grew = true; grew;) {
     grew = false;
-    for (std::size_t i = 0; i < items.size(); ++i) {
+    for (std::size_t i = 0; i < query.size(); ++i) {
       if (taken[i]) continue;
       QueryParams trial = kept;
-      trial.push_back(items[i]);
+      trial.push_back(query[i]);
       bool ok = renders(trial);
       if (!ok && !fallback[i].empty()) {
         trial.back().second = fallback[i];

@@ -113,7 +113,7 @@ nlohmann::json SettingsJson(const RenderArgs& args) {
           {"set", args.overrides}};
 }
 
-nlohmann::json Tunables(const nlohmann::json& document) {
+nlohmann::json Tunables(const nlohmann::json& document, double viewPlaneDistance) {
   nlohmann::json out = nlohmann::json::array();
   const auto add = [&](const std::string& pointer, const std::string& label, double value,
                        double low, double high, double step, const char* modes, bool grey = false) {
@@ -149,20 +149,9 @@ nlohmann::json Tunables(const nlohmann::json& document) {
         grey(document["area_light"]["radiance"]), 0.0, 200.0, 0.5, "mc", true);
   }
   // The design's second way to change the perspective: the view plane nearer or farther
-  // (its size kept), from the set-up rule's distance when the file gives none.
-  const nlohmann::json& camera = document.value("camera", nlohmann::json::object());
-  const nlohmann::json& room = document.value("room", nlohmann::json::object());
-  if (camera.contains("view_plane_distance") && camera["view_plane_distance"].is_number()) {
-    add("/camera/view_plane_distance", "view plane distance (m)",
-        camera["view_plane_distance"].get<double>(), 0.2, 6.0, 0.05, "both");
-  } else if (camera.contains("eye") && camera["eye"].is_array() && camera["eye"].size() == 3 &&
-             camera["eye"][2].is_number() && room.value("position", nlohmann::json()).is_array() &&
-             room["position"].size() == 3 && room["position"][2].is_number() &&
-             room.value("size", nlohmann::json()).is_number()) {
-    const double setUp = camera["eye"][2].get<double>() - room["position"][2].get<double>() -
-                         room["size"].get<double>();
-    add("/camera/view_plane_distance", "view plane distance (m)", setUp, 0.2, 6.0, 0.05, "both");
-  }
+  // (its size kept), from the distance the camera uses now.
+  add("/camera/view_plane_distance", "view plane distance (m)", viewPlaneDistance, 0.2, 6.0, 0.05,
+      "both");
   const nlohmann::json& lights = document.value("point_lights", nlohmann::json::array());
   for (std::size_t i = 0; i < lights.size(); ++i) {
     const std::string id = lights[i].value("id", "point light " + std::to_string(i));

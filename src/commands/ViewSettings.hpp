@@ -31,6 +31,6 @@ nlohmann::json SettingsJson(const RenderArgs& args);
 // Scene values the page offers sliders for, by JSON pointer: each glass object's
 // refractive index, each Phong exponent, the area light's radiance (mc) and the point
 // lights' intensities (whitted); each with its value in `document` and a range.
-nlohmann::json Tunables(const nlohmann::json& document);
+nlohmann::json Tunables(const nlohmann::json& document, double viewPlaneDistance);
 
 }  // namespace glint

@@ -123,7 +123,7 @@ class SceneNames {
     where_.emplace(name, path.empty() ? "/" : path);
     scene_.objectNames.push_back(name);
   }
-  // The default id of a part whose object index is `object`, `prefix` + a number.
+  // The object index the next part gets.
   int Next() const { return static_cast<int>(scene_.objectNames.size()); }
 
  private:

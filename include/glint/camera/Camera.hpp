@@ -48,8 +48,9 @@ class Camera {
   // The camera a scene file describes, at width x height pixels.
   Camera(const Wall& room, const CameraSettings& settings, int width, int height)
       : Camera(room, settings.eye, width, height, settings.viewPlaneDistance) {}
-  // The set-up rule's distance from the eye to the view plane: to the room's front.
-  static double SetUpDistance(const Wall& room, vec3 eye);
+  // The distance from the eye to the view plane: `given` if positive, else the set-up
+  // rule's, to the room's front.
+  static double ViewPlaneDistanceFor(const Wall& room, vec3 eye, double given);
 
   // The first half of the set-up rule: the eye lies on the axis through the centre of
   // the back wall, orthogonal to it, in front of the room's open side.
@@ -101,8 +102,6 @@ class Camera {
   Pixel& PixelAt(std::size_t i) { return pixels_[i]; }
   // `threads` > 1 fills the image's rows in parallel (a live view does it after each pass).
   Image ToImage(int threads = 1) const;
-  // Saves through the mapping function (PNG, PPM) or as linear radiance (PFM).
-  void Save(const std::string& path, double exposure) const;
 
  private:
   std::size_t Index(int x, int y) const {

@@ -8,7 +8,6 @@
 
 #include "cli/FlagTypo.hpp"
 #include "cli/RenderFlags.hpp"
-#include "cli/Revision.hpp"  // generated in the build tree (cmake/Revision.cmake)
 #include "commands/BenchCommand.hpp"
 #include "commands/CompareCommand.hpp"
 #include "commands/ConvergeCommand.hpp"
@@ -19,6 +18,7 @@
 #include "job/Cluster.hpp"
 #include "job/DataFiles.hpp"
 #include "job/RenderSetup.hpp"
+#include "job/Revision.hpp"  // generated in the build tree (cmake/Revision.cmake)
 
 namespace glint {
 
@@ -101,7 +101,9 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
       ->delimiter(',')
       ->check(CLI::IsMember(kModes))
       ->capture_default_str();
-  benchCommand->add_option("--repeat", bench.repeat, "Timed runs per row; the best one counts")
+  benchCommand
+      ->add_option("--repeat", bench.repeat,
+                   "Timed runs per row, the rows taking turns; the median counts")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   benchCommand->add_option("--sampler", bench.sampler, "Sampler: random, stratified or sobol")

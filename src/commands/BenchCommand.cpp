@@ -1,12 +1,16 @@
 #include "commands/BenchCommand.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <memory>
 
 #include "glint/image/ImageIO.hpp"
+#include "glint/image/SlopeFit.hpp"
 #include "job/Cluster.hpp"
 #include "job/ExitCode.hpp"
 #include "job/RenderReport.hpp"
+#include "job/RunClock.hpp"
 #include "nlohmann/json.hpp"
 
 namespace glint {
@@ -17,7 +21,24 @@ struct Row {
   std::string mode;
   int spp = 0;
   int threads = 0;
-  double seconds = 0.0;  // the best of the runs
+  double seconds = 0.0;  // the median of the runs
+  double fastest = 0.0;
+  double slowest = 0.0;
+  double cpu = 0.0;  // the median of the runs' CPU time, every thread's
+  RenderStats stats;
+};
+
+// One row's render, prepared once (the integrator keeps a reference to the setup's
+// scene, so the setup stays put) and warmed up; its runs are timed in turn with the
+// other rows' (a spell of load falls on all of them, not on one).
+struct Case {
+  RenderArgs args;
+  std::unique_ptr<RenderSetup> setup;
+  std::unique_ptr<Camera> camera;
+  std::unique_ptr<Integrator> integrator;
+  RenderOptions options;
+  std::vector<double> walls;
+  std::vector<double> cpus;
   RenderStats stats;
 };
 
@@ -33,37 +54,54 @@ RenderArgs RowArgs(const BenchArgs& args, const std::string& mode, int threads) 
   return r;
 }
 
-// The best of `repeat` timed renders of one pass (the camera is warmed up first, so
-// that the per-thread arenas exist before the clock starts).
-Row Measure(const BenchArgs& args, const std::string& mode, int threads) {
-  const RenderArgs r = RowArgs(args, mode, threads);
-  const RenderSetup s = Prepare(r, false);
-  Camera camera(s.scene.wall, s.scene.camera, s.width, s.height);
-  const std::unique_ptr<Integrator> integrator = MakeIntegrator(r, s);
-  RenderOptions options;
-  options.sampler = SamplerFromArgs(r);
-  options.threads = threads;
-  options.raysPerPixel = 1;
-  camera.Render(*integrator, options);  // warm-up: arenas, caches, page faults
-  options.raysPerPixel = s.raysPerPass;
-  Row row{mode, s.raysPerPass, threads, 0.0, {}};
-  for (int i = 0; i < args.repeat; ++i) {
-    camera.Clear();
-    const auto start = std::chrono::steady_clock::now();
-    PrepareShaftsIfTheyPay(camera, *integrator, s, false);  // as glint render does, on the clock
-    const RenderStats stats = camera.Render(*integrator, options);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (i == 0 || seconds < row.seconds) {
-      row.seconds = seconds;
-      row.stats = stats;
-    }
-  }
+Case Prepared(const BenchArgs& args, const std::string& mode, int threads) {
+  Case c;
+  c.args = RowArgs(args, mode, threads);
+  c.setup = std::make_unique<RenderSetup>(Prepare(c.args, false));
+  const RenderSetup& s = *c.setup;
+  c.camera = std::make_unique<Camera>(s.scene.wall, s.scene.camera, s.width, s.height);
+  c.integrator = MakeIntegrator(c.args, s);
+  c.options.sampler = SamplerFromArgs(c.args);
+  c.options.threads = threads;
+  c.options.raysPerPixel = 1;
+  c.camera->Render(*c.integrator, c.options);  // warm-up: arenas, caches, page faults
+  c.options.raysPerPixel = s.raysPerPass;
+  return c;
+}
+
+// One timed render of one pass, shafts prepared on the clock as glint render does.
+void Run(Case& c) {
+  c.camera->Clear();
+  const RunClock clock;
+  PrepareShaftsIfTheyPay(*c.camera, *c.integrator, *c.setup, false);
+  c.stats = c.camera->Render(*c.integrator, c.options);
+  const Timing t = clock.Elapsed();
+  c.walls.push_back(t.wall);
+  c.cpus.push_back(t.cpu);
+}
+
+Row RowOf(const Case& c, const std::string& mode, int threads) {
+  Row row{mode,
+          c.setup->raysPerPass,
+          threads,
+          MedianOf(c.walls),
+          *std::min_element(c.walls.begin(), c.walls.end()),
+          *std::max_element(c.walls.begin(), c.walls.end()),
+          MedianOf(c.cpus),
+          c.stats};
   return row;
 }
 
-std::string ToJson(const BenchArgs& args, const std::vector<Row>& rows) {
+// `repeat` timed renders of one row on its own (the MPI bench's one-rank row).
+Row Measure(const BenchArgs& args, const std::string& mode, int threads) {
+  Case c = Prepared(args, mode, threads);
+  for (int i = 0; i < args.repeat; ++i) Run(c);
+  return RowOf(c, mode, threads);
+}
+
+std::string ToJson(const BenchArgs& args, const std::vector<Row>& rows, double otherCores) {
   nlohmann::json j;
+  j["other_processes_cores"] = otherCores;
   j["scene"] = args.scene;
   j["size"] = args.size;
   j["repeat"] = args.repeat;
@@ -74,6 +112,9 @@ std::string ToJson(const BenchArgs& args, const std::vector<Row>& rows) {
                          {"spp", row.spp},
                          {"threads", row.threads},
                          {"seconds", row.seconds},
+                         {"seconds_min", row.fastest},
+                         {"seconds_max", row.slowest},
+                         {"cpu_seconds", row.cpu},
                          {"sampler", args.sampler},
                          {"rays_traced", row.stats.TracedRays()},
                          {"visibility_answered_without_a_ray", row.stats.shadowRaysByShaft},
@@ -88,7 +129,7 @@ std::string ToJson(const BenchArgs& args, const std::vector<Row>& rows) {
 // spread over them as glint render spreads it; the speedup and the communication.
 int RunBenchRanks(const BenchArgs& args, const Cluster& cluster) {
   if (cluster.Root()) {
-    std::printf("glint bench: %s, %s pixels, best of %d run%s, one thread per rank\n",
+    std::printf("glint bench: %s, %s pixels, median of %d run%s, one thread per rank\n",
                 args.scene.c_str(), args.size.c_str(), args.repeat, args.repeat == 1 ? "" : "s");
     std::printf("%-8s %5s %6s %9s %9s %12s %8s %9s %11s\n", "mode", "spp", "ranks", "seconds",
                 "Mrays/s", "Mrays/s/rank", "speedup", "messages", "bytes");
@@ -106,7 +147,7 @@ int RunBenchRanks(const BenchArgs& args, const Cluster& cluster) {
     options.raysPerPixel = 1;
     camera.Render(*integrator, options);  // warm-up on every rank
     options.raysPerPixel = s.raysPerPass;
-    double best = 0.0;
+    std::vector<double> times;
     RenderStats bestStats;
     std::uint64_t messages = 0;
     std::uint64_t bytes = 0;
@@ -125,13 +166,12 @@ int RunBenchRanks(const BenchArgs& args, const Cluster& cluster) {
       // Rank 0's own messages and bytes; the other ranks' are added below.
       const std::uint64_t m = cluster.MessagesSent() - m0;
       const std::uint64_t b = cluster.BytesSent() - b0;
-      if (i == 0 || seconds < best) {
-        best = seconds;
-        bestStats = stats;
-        messages = m;
-        bytes = b;
-      }
+      times.push_back(seconds);
+      bestStats = stats;  // every run does the same work
+      messages = m;
+      bytes = b;
     }
+    const double best = MedianOf(times);
     std::uint64_t all[2] = {messages, bytes};
     cluster.SumOnRoot(all, 2);
     if (cluster.Root()) {
@@ -163,30 +203,46 @@ int RunBench(const BenchArgs& args, const Cluster& cluster) {
   }
   const bool square = args.size.find_first_of("xX") == std::string::npos;
   std::printf(
-      "glint bench: %s, %s%s%s pixels, best of %d run%s, seed 1, sampler %s; rays traced (a "
-      "shadow test a pixel's shaft answered is not a ray: 'shaft M/s')\n",
+      "glint bench: %s, %s%s%s pixels, median of %d run%s (the rows take turns), seed 1, "
+      "sampler %s; rays traced (a shadow test a pixel's shaft answered is not a ray: "
+      "'shaft M/s')\n",
       args.scene.c_str(), args.size.c_str(), square ? "x" : "", square ? args.size.c_str() : "",
       args.repeat, args.repeat == 1 ? "" : "s", args.sampler.c_str());
-  std::printf("%-8s %5s %7s %9s %11s %9s %14s %8s %11s\n", "mode", "spp", "threads", "seconds",
-              "Mpaths/s", "Mrays/s", "Mrays/s/thread", "speedup", "shaft M/s");
+  std::vector<Case> cases;
+  for (const std::string& mode : args.modes) {
+    for (const int threads : args.threads) cases.push_back(Prepared(args, mode, threads));
+  }
+  const RunClock clock;
+  for (int i = 0; i < args.repeat; ++i) {
+    for (Case& c : cases) Run(c);
+  }
+  const double others = clock.Elapsed().OtherCores();
+  std::printf("%-8s %5s %7s %9s %15s %11s %9s %14s %8s %11s\n", "mode", "spp", "threads", "seconds",
+              "(min - max)", "Mpaths/s", "Mrays/s", "Mrays/s/thread", "speedup", "shaft M/s");
   std::vector<Row> rows;
+  std::size_t next = 0;
   for (const std::string& mode : args.modes) {
     double first = 0.0;
     for (const int threads : args.threads) {
-      const Row row = Measure(args, mode, threads);
+      const Row row = RowOf(cases[next++], mode, threads);
       if (first == 0.0) first = row.seconds;  // speedups are relative to the first count
       const double rays = static_cast<double>(row.stats.TracedRays()) / row.seconds / 1e6;
-      std::printf("%-8s %5d %7d %9.3f %11.2f %9.2f %14.2f %8.2f %11.2f\n", mode.c_str(), row.spp,
-                  threads, row.seconds,
+      char spread[32];
+      std::snprintf(spread, sizeof spread, "(%.3f - %.3f)", row.fastest, row.slowest);
+      std::printf("%-8s %5d %7d %9.3f %15s %11.2f %9.2f %14.2f %8.2f %11.2f\n", mode.c_str(),
+                  row.spp, threads, row.seconds, spread,
                   static_cast<double>(row.stats.cameraRays) / row.seconds / 1e6, rays,
                   rays / threads, first / row.seconds,
                   static_cast<double>(row.stats.shadowRaysByShaft) / row.seconds / 1e6);
-      std::fflush(stdout);
       rows.push_back(row);
     }
   }
+  std::printf("other processes took %.0f%% of a core during the runs%s\n", 100.0 * others,
+              others > 0.25 ? ": the machine was busy, and the times and speedups are "
+                              "not glint's alone"
+                            : "");
   std::printf("peak memory (resident): %.1f MiB\n", PeakResidentMiB());
-  if (!args.json.empty()) WriteFileAtomically(args.json, ToJson(args, rows));
+  if (!args.json.empty()) WriteFileAtomically(args.json, ToJson(args, rows, others));
   return kExitOk;
 }
 

@@ -3,11 +3,13 @@
 #include <cstdio>
 #include <optional>
 #include <stdexcept>
+#include <tuple>
 
 #include "glint/core/JsonReader.hpp"
 #include "glint/image/BiasTest.hpp"
 #include "glint/image/ImageIO.hpp"
 #include "job/ExitCode.hpp"
+#include "job/RenderAttributes.hpp"
 
 namespace glint {
 
@@ -17,6 +19,14 @@ namespace {
 Image ReadInput(const std::string& path) {
   try {
     return ReadImage(path);
+  } catch (const std::runtime_error& e) {
+    throw InputError(e.what());
+  }
+}
+
+ImageAttributes ReadAttributes(const std::string& path) {
+  try {
+    return ReadImageAttributes(path);
   } catch (const std::runtime_error& e) {
     throw InputError(e.what());
   }
@@ -44,14 +54,40 @@ int RunCompare(const CompareArgs& args) {
     }
   }
   // The noise comes from A - B (and REF - REF2): one render given twice has none, and
-  // every difference from the reference would be infinitely many standard errors.
-  if (SamePixels(a, b)) {
-    throw InputError(args.b + ": the same image as " + args.a +
-                     ": A and B must be independent renders (another --seed)");
+  // every difference from the reference would be infinitely many standard errors. The same
+  // seed in two EXR files' attributes makes the same noise too.
+  const ImageAttributes atA = ReadAttributes(args.a);
+  const ImageAttributes atB = ReadAttributes(args.b);
+  const ImageAttributes atRef = ReadAttributes(args.reference);
+  CheckSameScene(atA, atRef, args.reference, args.a);
+  CheckSameScene(atB, atRef, args.reference, args.b);
+  CheckSameScene(atA, atB, args.b, args.a);
+  if (SamePixels(a, b) || SameSeed(atA, atB)) {
+    throw InputError(args.a + " and " + args.b + ": A and B are the same render" +
+                     (SamePixels(a, b) ? "" : " (the same seed)") +
+                     ": render B with another --seed");
+  }
+  for (const auto& [image, path, at] : {std::tie(a, args.a, atA), std::tie(b, args.b, atB)}) {
+    if (SamePixels(image, ref) || SameSeed(at, atRef)) {
+      throw InputError(path + " and " + args.reference +
+                       ": a render and its reference are the same render" +
+                       (SamePixels(image, ref) ? "" : " (the same seed)") +
+                       ": render the reference with another --seed");
+    }
   }
   if (ref2 && SamePixels(ref, *ref2)) {
     throw InputError(args.reference2 + ": the same image as " + args.reference +
                      ": REF2 must be a render independent of REF (another --seed)");
+  }
+  for (const auto& [image, path] : {std::tie(a, args.a), std::tie(b, args.b)}) {
+    const double mean = image.Mean() / args.scale;
+    if (mean > 2.0 * ref.Mean() || ref.Mean() > 2.0 * mean) {
+      std::fprintf(stderr,
+                   "glint compare: warning: %s has mean radiance %.4g, %s the reference's %.4g "
+                   "(%s): is the reference of the same scene and mode?\n",
+                   path.c_str(), mean, mean > ref.Mean() ? "more than twice" : "less than half",
+                   ref.Mean(), args.reference.c_str());
+    }
   }
   BiasTestOptions options;
   options.block = args.block;

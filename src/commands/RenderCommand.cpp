@@ -13,6 +13,7 @@
 #include "job/Cluster.hpp"
 #include "job/ExitCode.hpp"
 #include "job/Interrupt.hpp"
+#include "job/RenderAttributes.hpp"
 #include "job/RenderJob.hpp"
 #include "job/RenderReport.hpp"
 
@@ -96,7 +97,8 @@ int RunRender(const RenderArgs& args, const Cluster& cluster) {
   int rows = 0;
   const std::size_t unrendered = r.interrupted ? MarkUnrendered(camera, image, rows) : 0;
   try {
-    for (const std::string& path : s.outputs) WriteImage(image, target(path), s.exposure);
+    const ImageAttributes identity = RenderAttributes(args, s, r.spp);
+    for (const std::string& path : s.outputs) WriteImage(image, target(path), s.exposure, identity);
     if (!args.statsPath.empty()) {
       WriteFileAtomically(target(args.statsPath), StatsJson(args, s, camera, r));
     }

@@ -19,6 +19,8 @@ namespace glint {
 
 namespace {
 
+constexpr const char* kPrefix = "glint:";
+
 // An Imf::OStream that appends to a string.
 class StringOStream final : public Imf::OStream {
  public:
@@ -51,12 +53,15 @@ std::vector<float> Planes(const Image& image) {
 
 }  // namespace
 
-std::string EncodeExr(const Image& image) {
+std::string EncodeExr(const Image& image, const ImageAttributes& attributes) {
   const int w = image.Width();
   const int h = image.Height();
   Imf::Header header(w, h);
   header.compression() = Imf::ZIP_COMPRESSION;
   header.insert("software", Imf::StringAttribute("glint"));
+  for (const auto& [name, value] : attributes) {
+    header.insert(kPrefix + name, Imf::StringAttribute(value));
+  }
   const char* names[3] = {"R", "G", "B"};
   std::vector<float> planes = Planes(image);
   const std::size_t n = image.Pixels().size();
@@ -114,6 +119,24 @@ Image ReadExr(const std::string& path) {
     return image;
   } catch (const std::runtime_error&) {
     throw;
+  } catch (const std::exception& e) {
+    throw std::runtime_error(path + ": not a readable OpenEXR file: " + e.what());
+  }
+}
+
+ImageAttributes ReadExrAttributes(const std::string& path) {
+  try {
+    const Imf::InputFile file(path.c_str());
+    ImageAttributes out;
+    const std::string prefix = kPrefix;
+    for (auto it = file.header().begin(); it != file.header().end(); ++it) {
+      const std::string name = it.name();
+      const auto* text = dynamic_cast<const Imf::StringAttribute*>(&it.attribute());
+      if (text != nullptr && name.compare(0, prefix.size(), prefix) == 0) {
+        out[name.substr(prefix.size())] = text->value();
+      }
+    }
+    return out;
   } catch (const std::exception& e) {
     throw std::runtime_error(path + ": not a readable OpenEXR file: " + e.what());
   }

@@ -112,12 +112,13 @@ void WriteFileAtomically(const std::string& path, const std::string& bytes) {
   }
 }
 
-std::string EncodeImage(const Image& image, ImageFormat format, double exposure) {
+std::string EncodeImage(const Image& image, ImageFormat format, double exposure,
+                        const ImageAttributes& attributes) {
   switch (format) {
     case ImageFormat::Pfm:
       return EncodePfm(image);
     case ImageFormat::Exr:
-      return EncodeExr(image);
+      return EncodeExr(image, attributes);
     case ImageFormat::Png:
       return EncodePng(image, exposure);
     case ImageFormat::Ppm:
@@ -126,8 +127,9 @@ std::string EncodeImage(const Image& image, ImageFormat format, double exposure)
   return {};
 }
 
-void WriteImage(const Image& image, const std::string& path, double exposure) {
-  WriteFileAtomically(path, EncodeImage(image, FormatFromPath(path), exposure));
+void WriteImage(const Image& image, const std::string& path, double exposure,
+                const ImageAttributes& attributes) {
+  WriteFileAtomically(path, EncodeImage(image, FormatFromPath(path), exposure, attributes));
 }
 
 void WritePfm(const Image& image, const std::string& path) {
@@ -156,6 +158,11 @@ Image ReadPfm(const std::string& path) {
   }
   if (!in) throw std::runtime_error(path + ": truncated PFM file");
   return image;
+}
+
+ImageAttributes ReadImageAttributes(const std::string& path) {
+  if (Extension(path) == ".exr") return ReadExrAttributes(path);
+  return {};
 }
 
 Image ReadImage(const std::string& path) {

@@ -10,7 +10,7 @@ cd "$dir"
 "$glint" render "$scene" --mode mc --size 32 --spp 1024 -q -o ref.pfm
 "$glint" converge "$scene" --mode mc --reference ref.pfm --ladder 1,4,16,64 \
   --compare strategy=mis,light,brdf --csv c.csv --chart c.png
-head -1 c.csv | grep -q '^variant,step,spp,seconds,rmse,rel_mse,block_rmse,bias_r,bias_g,bias_b,firefly_ratio$'
+head -1 c.csv | grep -q '^variant,step,spp,seconds,rmse,rel_mse,block_rmse,bias_r,bias_g,bias_b,firefly_ratio,rel_mse_se,seconds_min,seconds_max,cpu_seconds,repeats,other_cores,slope_rel_mse_time,slope_rel_mse_time_se,slope_rmse_time,slope_rmse_time_se,slope_rel_mse_spp,slope_rel_mse_spp_se,warning$'
 [ "$(tail -n +2 c.csv | wc -l)" -eq 12 ] || { echo "FAIL: expected 12 rows"; exit 1; }
 for v in mis light brdf; do
   first=$(grep "^strategy=$v,0," c.csv | cut -d, -f5)

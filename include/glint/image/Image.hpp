@@ -27,6 +27,13 @@ class Image {
     return out;
   }
 
+  // The mean radiance over pixels and channels (0 for an empty image).
+  double Mean() const {
+    double sum = 0.0;
+    for (const Colour& c : pixels_) sum += c.x + c.y + c.z;
+    return pixels_.empty() ? 0.0 : sum / (3.0 * static_cast<double>(pixels_.size()));
+  }
+
   // The mapping function: radiance times exposure, clamped to [0,1], the sRGB transfer
   // curve, then 8 bits. Returns RGB bytes, row 0 first.
   std::vector<std::uint8_t> ToDisplay(double exposure) const;

@@ -1,19 +1,23 @@
 #!/usr/bin/env bash
-# figures_test.sh SOURCE_DIR GLINT OUT: tools/figures --quick writes all twelve figures, a
-# well-formed CSV behind each, and the report page that shows them.
+# figures_test.sh SOURCE_DIR GLINT OUT [FIGURES FLAGS...]: tools/figures --quick writes all
+# twelve figures, a well-formed CSV behind each, and the report page that shows them,
+# whose captions' numbers are all in those CSVs (tests/tools/captions_check.py, which
+# also edits each caption once and sees the check fail).
 set -eu
 src=$1
 glint=$2
 out=$3
+shift 3
 rm -rf "$out"
-"$src/tools/figures" --quick --glint "$glint" --out "$out"
+"$src/tools/figures" --quick --glint "$glint" --out "$out" "$@"
 /usr/bin/python3 - "$out" <<'PY'
 import csv, glob, os, sys
 out = sys.argv[1]
 pngs = sorted(glob.glob(os.path.join(out, "[0-9]*-*.png")))
 csvs = sorted(glob.glob(os.path.join(out, "[0-9]*-*.csv")))
 assert len(pngs) == 12, f"{len(pngs)} figures: {pngs}"
-assert len(csvs) == 12, f"{len(csvs)} tables: {csvs}"
+figures = {os.path.basename(c).split("-")[0] for c in csvs}
+assert len(figures) == 12, f"tables of {len(figures)} figures: {csvs}"
 for p in pngs:
     with open(p, "rb") as f:
         assert f.read(8) == b"\x89PNG\r\n\x1a\n", p
@@ -32,3 +36,4 @@ import re
 assert not re.search(r"\b(nan|inf)\b", readme.lower()), "a NaN or Inf reached the report"
 print(f"figures: {len(pngs)} figures, {len(csvs)} tables, README.md ok")
 PY
+/usr/bin/python3 "$src/tests/tools/captions_check.py" "$out"

@@ -11,6 +11,7 @@
 #include "job/ExitCode.hpp"
 #include "job/RenderReport.hpp"
 #include "job/RunClock.hpp"
+#include "job/TimedRender.hpp"
 #include "nlohmann/json.hpp"
 
 namespace glint {
@@ -28,15 +29,10 @@ struct Row {
   RenderStats stats;
 };
 
-// One row's render, prepared once (the integrator keeps a reference to the setup's
-// scene, so the setup stays put) and warmed up; its runs are timed in turn with the
-// other rows' (a spell of load falls on all of them, not on one).
+// One row's render, prepared once; its runs are timed in turn with the other rows' (a
+// spell of load falls on all of them, not on one).
 struct Case {
-  RenderArgs args;
-  std::unique_ptr<RenderSetup> setup;
-  std::unique_ptr<Camera> camera;
-  std::unique_ptr<Integrator> integrator;
-  RenderOptions options;
+  TimedRender render;
   std::vector<double> walls;
   std::vector<double> cpus;
   RenderStats stats;
@@ -55,26 +51,19 @@ RenderArgs RowArgs(const BenchArgs& args, const std::string& mode, int threads) 
 }
 
 Case Prepared(const BenchArgs& args, const std::string& mode, int threads) {
-  Case c;
-  c.args = RowArgs(args, mode, threads);
-  c.setup = std::make_unique<RenderSetup>(Prepare(c.args, false));
-  const RenderSetup& s = *c.setup;
-  c.camera = std::make_unique<Camera>(s.scene.wall, s.scene.camera, s.width, s.height);
-  c.integrator = MakeIntegrator(c.args, s);
-  c.options.sampler = SamplerFromArgs(c.args);
-  c.options.threads = threads;
-  c.options.raysPerPixel = 1;
-  c.camera->Render(*c.integrator, c.options);  // warm-up: arenas, caches, page faults
-  c.options.raysPerPixel = s.raysPerPass;
+  const RenderArgs r = RowArgs(args, mode, threads);
+  Case c{PrepareTimedRender(Prepare(r, false), r), {}, {}, {}};
+  c.render.options.raysPerPixel = c.render.setup->raysPerPass;
   return c;
 }
 
 // One timed render of one pass, shafts prepared on the clock as glint render does.
 void Run(Case& c) {
-  c.camera->Clear();
+  TimedRender& r = c.render;
+  r.camera->Clear();
   const RunClock clock;
-  PrepareShaftsIfTheyPay(*c.camera, *c.integrator, *c.setup, false);
-  c.stats = c.camera->Render(*c.integrator, c.options);
+  PrepareShaftsIfTheyPay(*r.camera, *r.integrator, *r.setup, false);
+  c.stats = r.camera->Render(*r.integrator, r.options);
   const Timing t = clock.Elapsed();
   c.walls.push_back(t.wall);
   c.cpus.push_back(t.cpu);
@@ -82,7 +71,7 @@ void Run(Case& c) {
 
 Row RowOf(const Case& c, const std::string& mode, int threads) {
   Row row{mode,
-          c.setup->raysPerPass,
+          c.render.setup->raysPerPass,
           threads,
           MedianOf(c.walls),
           *std::min_element(c.walls.begin(), c.walls.end()),
@@ -138,17 +127,14 @@ int RunBenchRanks(const BenchArgs& args, const Cluster& cluster) {
     Row one;
     if (cluster.Root()) one = Measure(args, mode, 1);
     const RenderArgs r = RowArgs(args, mode, 1);
-    const RenderSetup s = Prepare(r, false);
-    Camera camera(s.scene.wall, s.scene.camera, s.width, s.height);
-    const std::unique_ptr<Integrator> integrator = MakeIntegrator(r, s);
-    RenderOptions options;
-    options.sampler = SamplerFromArgs(r);
-    options.threads = 1;
-    options.raysPerPixel = 1;
-    camera.Render(*integrator, options);  // warm-up on every rank
+    TimedRender t = PrepareTimedRender(Prepare(r, false), r);  // warmed up on every rank
+    const RenderSetup& s = *t.setup;
+    Camera& camera = *t.camera;
+    const Integrator& integrator = *t.integrator;
+    RenderOptions& options = t.options;
     options.raysPerPixel = s.raysPerPass;
     std::vector<double> times;
-    RenderStats bestStats;
+    RenderStats runStats;
     std::uint64_t messages = 0;
     std::uint64_t bytes = 0;
     for (int i = 0; i < args.repeat; ++i) {
@@ -157,9 +143,9 @@ int RunBenchRanks(const BenchArgs& args, const Cluster& cluster) {
       const std::uint64_t m0 = cluster.MessagesSent();
       const std::uint64_t b0 = cluster.BytesSent();
       const auto start = std::chrono::steady_clock::now();
-      PrepareShaftsIfTheyPay(camera, *integrator, s, false);
+      PrepareShaftsIfTheyPay(camera, integrator, s, false);
       RenderStats stats;
-      cluster.RenderPass(camera, *integrator, options, stats, {});
+      cluster.RenderPass(camera, integrator, options, stats, {});
       cluster.Barrier();
       const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -167,22 +153,22 @@ int RunBenchRanks(const BenchArgs& args, const Cluster& cluster) {
       const std::uint64_t m = cluster.MessagesSent() - m0;
       const std::uint64_t b = cluster.BytesSent() - b0;
       times.push_back(seconds);
-      bestStats = stats;  // every run does the same work
+      runStats = stats;  // every run does the same work
       messages = m;
       bytes = b;
     }
-    const double best = MedianOf(times);
+    const double median = MedianOf(times);
     std::uint64_t all[2] = {messages, bytes};
     cluster.SumOnRoot(all, 2);
     if (cluster.Root()) {
-      const double rays = static_cast<double>(bestStats.TracedRays()) / best / 1e6;
+      const double rays = static_cast<double>(runStats.TracedRays()) / median / 1e6;
       std::printf("%-8s %5d %6d %9.3f %9.2f %12.2f %8s %9s %11s\n", mode.c_str(), one.spp, 1,
                   one.seconds, static_cast<double>(one.stats.TracedRays()) / one.seconds / 1e6,
                   static_cast<double>(one.stats.TracedRays()) / one.seconds / 1e6, "1.00", "0",
                   "0");
       std::printf("%-8s %5d %6d %9.3f %9.2f %12.2f %8.2f %9llu %11llu\n", mode.c_str(),
-                  s.raysPerPass, cluster.Size(), best, rays, rays / cluster.Size(),
-                  one.seconds / best, static_cast<unsigned long long>(all[0]),
+                  s.raysPerPass, cluster.Size(), median, rays, rays / cluster.Size(),
+                  one.seconds / median, static_cast<unsigned long long>(all[0]),
                   static_cast<unsigned long long>(all[1]));
       std::fflush(stdout);
     }

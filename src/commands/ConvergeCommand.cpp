@@ -21,6 +21,7 @@
 #include "job/RenderAttributes.hpp"
 #include "job/RunClock.hpp"
 #include "job/Subprocess.hpp"
+#include "job/TimedRender.hpp"
 
 namespace glint {
 
@@ -128,15 +129,31 @@ struct Repeat {
   ImageError error;
 };
 
+// What a repeat measured, one accessor each (RungResult::Each maps them over the runs).
+double WallOf(const Repeat& x) {
+  return x.timing.wall;
+}
+double CpuOf(const Repeat& x) {
+  return x.timing.cpu;
+}
+double SppOf(const Repeat& x) {
+  return static_cast<double>(x.spp);
+}
+double RelMseOf(const Repeat& x) {
+  return x.error.relativeMse;
+}
+double RmseOf(const Repeat& x) {
+  return x.error.rmse;
+}
+
 struct RungResult {
   std::vector<Repeat> repeats;
-  Timing load;              // of the whole rung, every variant's repeats
-  double otherCores = 0.0;  // load.OtherCores()
+  Timing load;  // of the whole rung, every variant's repeats
   std::vector<std::string> warnings;
 
   double Wall() const {
     double sum = 0.0;
-    for (const Repeat& r : repeats) sum += r.timing.wall;
+    for (const Repeat& r : repeats) sum += WallOf(r);
     return sum;
   }
   bool RoundDone(int round, int rounds) const {
@@ -144,7 +161,7 @@ struct RungResult {
     int count = 0;
     for (const Repeat& r : repeats) {
       if (r.round != round) continue;
-      wall += r.timing.wall;
+      wall += WallOf(r);
       ++count;
     }
     return count >= kMaxRepeats / rounds || (count > 0 && wall >= kFloorSeconds / rounds);
@@ -158,13 +175,10 @@ struct RungResult {
   }
 };
 
-// One variant's render: its scene, camera and integrator, prepared once.
+// One variant's render, prepared once, and what its rungs measured.
 struct Study {
   Variant variant;
-  std::unique_ptr<RenderSetup> setup;  // the integrator keeps a reference to its scene
-  std::unique_ptr<Camera> camera;
-  std::unique_ptr<Integrator> integrator;
-  RenderOptions options;
+  TimedRender render;
   std::vector<RungResult> rungs;
   std::vector<std::string> warnings;  // of the whole variant
   Slope relMseByTime;
@@ -182,16 +196,17 @@ std::uint64_t RepeatSeed(std::uint64_t seed, std::size_t rung, std::size_t repea
 // the passes up to `step` rays per pixel (or seconds), timed; the error after the clock.
 Repeat RenderRepeat(Study& st, bool byTime, double step, std::uint64_t seed,
                     const Image& reference) {
-  Camera& camera = *st.camera;
+  Camera& camera = *st.render.camera;
   camera.Clear();
-  RenderOptions options = st.options;
+  RenderOptions options = st.render.options;
   options.seed = seed;
   RunClock clock;
   if (byTime || step >= PixelShaft::kPaysFromRaysPerPixel) {
-    camera.PrepareShafts(st.setup->scene, st.integrator->ShadowLights(), st.setup->threads);
+    camera.PrepareShafts(st.render.setup->scene, st.render.integrator->ShadowLights(),
+                         st.render.setup->threads);
   }
   const Cluster single;  // this process alone
-  PassLoop loop(camera, *st.integrator, options, single);
+  PassLoop loop(camera, *st.render.integrator, options, single);
   if (byTime) {
     PassSchedule schedule(st.variant.args.spp > 0 ? st.variant.args.spp : 0);
     int rays = schedule.FirstRays();
@@ -233,11 +248,12 @@ std::string Csv(const std::vector<Study>& studies) {
       const RungResult& r = st.rungs[k];
       if (r.repeats.empty()) continue;
       const auto mean = [&](auto f) { return MeanOf(r.Each(f)); };
-      const std::vector<double> rel = r.Each([](const Repeat& x) { return x.error.relativeMse; });
-      const std::vector<double> walls = r.Each([](const Repeat& x) { return x.timing.wall; });
+      const std::vector<double> rel = r.Each(RelMseOf);
+      const std::vector<double> walls = r.Each(WallOf);
       const double n = static_cast<double>(rel.size());
+      const double relMean = MeanOf(rel);
       double var = 0.0;
-      for (const double v : rel) var += (v - MeanOf(rel)) * (v - MeanOf(rel));
+      for (const double v : rel) var += (v - relMean) * (v - relMean);
       const double relSe = n > 1 ? std::sqrt(var / (n - 1) / n) : 0.0;
       std::vector<std::string> warnings = st.warnings;
       warnings.insert(warnings.end(), r.warnings.begin(), r.warnings.end());
@@ -245,20 +261,17 @@ std::string Csv(const std::vector<Study>& studies) {
           line, sizeof line,
           "%s,%zu,%.0f,%.6f,%.8g,%.8g,%.8g,%.6g,%.6g,%.6g,%.6g,%.4g,%.6f,%.6f,%.6f,%zu,%.3f,%.4f,"
           "%.4f,%.4f,%.4f,%.4f,%.4f,%s\n",
-          st.variant.name.c_str(), k,
-          MedianOf(r.Each([](const Repeat& x) { return static_cast<double>(x.spp); })),
-          MedianOf(walls), mean([](const Repeat& x) { return x.error.rmse; }), MeanOf(rel),
-          mean([](const Repeat& x) { return x.error.blockRmse; }),
+          st.variant.name.c_str(), k, MedianOf(r.Each(SppOf)), MedianOf(walls), mean(RmseOf),
+          relMean, mean([](const Repeat& x) { return x.error.blockRmse; }),
           mean([](const Repeat& x) { return x.error.bias.x; }),
           mean([](const Repeat& x) { return x.error.bias.y; }),
           mean([](const Repeat& x) { return x.error.bias.z; }),
           mean([](const Repeat& x) { return x.error.fireflyRatio; }), relSe,
           *std::min_element(walls.begin(), walls.end()),
-          *std::max_element(walls.begin(), walls.end()),
-          MedianOf(r.Each([](const Repeat& x) { return x.timing.cpu; })), r.repeats.size(),
-          r.otherCores, st.relMseByTime.value, st.relMseByTime.standardError, st.rmseByTime.value,
-          st.rmseByTime.standardError, st.relMseBySpp.value, st.relMseBySpp.standardError,
-          Joined(warnings).c_str());
+          *std::max_element(walls.begin(), walls.end()), MedianOf(r.Each(CpuOf)), r.repeats.size(),
+          r.load.OtherCores(), st.relMseByTime.value, st.relMseByTime.standardError,
+          st.rmseByTime.value, st.rmseByTime.standardError, st.relMseBySpp.value,
+          st.relMseBySpp.standardError, Joined(warnings).c_str());
       out += line;
     }
   }
@@ -273,25 +286,15 @@ std::string Size(const Image& i) {
 Study Prepared(Variant v, const Image& reference, const std::string& referencePath,
                const std::atomic<bool>& interrupted) {
   if (v.args.size.empty()) v.args.size = Size(reference);
-  Study st;
-  st.setup = std::make_unique<RenderSetup>(Prepare(v.args, /*checkOutputs=*/false));
-  const RenderSetup& s = *st.setup;
+  RenderSetup s = Prepare(v.args, /*checkOutputs=*/false);
   if (s.width != reference.Width() || s.height != reference.Height()) {
     throw InputError("--reference " + referencePath + ": expected an image of the render's size " +
                      std::to_string(s.width) + "x" + std::to_string(s.height) +
                      " (--size), found " + Size(reference));
   }
-  st.camera = std::make_unique<Camera>(s.scene.wall, s.scene.camera, s.width, s.height);
-  st.integrator = MakeIntegrator(v.args, s);
-  st.options.seed = v.args.seed;
-  st.options.sampler = SamplerFromArgs(v.args);
-  st.options.threads = v.args.threads;
-  st.options.cancel = &interrupted;
-  // A warm-up pass (threads started, arenas grown, pages touched) before any clock runs.
-  st.options.raysPerPixel = 1;
-  st.options.pass = 0xffffffffU;
-  st.camera->Render(*st.integrator, st.options);
-  st.options.pass = 0;
+  Study st;
+  st.render = PrepareTimedRender(std::move(s), v.args);
+  st.render.options.cancel = &interrupted;
   st.variant = std::move(v);
   return st;
 }
@@ -299,7 +302,7 @@ Study Prepared(Variant v, const Image& reference, const std::string& referencePa
 // A render whose mean is off from the reference's by more than a factor 2 is compared with
 // something else: another scene, mode or light.
 void WarnOnMeans(Study& st, const Image& reference, const std::string& referencePath) {
-  const double mean = st.camera->ToImage().Mean();
+  const double mean = st.render.camera->ToImage().Mean();
   const double ref = reference.Mean();
   if (mean <= 2.0 * ref && ref <= 2.0 * mean) return;
   char text[400];
@@ -317,14 +320,11 @@ void Fit(Study& st) {
   std::vector<Rung> bySpp;
   for (const RungResult& r : st.rungs) {
     if (r.repeats.empty()) continue;
-    const auto wall = [](const Repeat& x) { return x.timing.wall; };
-    const auto rel = [](const Repeat& x) { return x.error.relativeMse; };
     std::vector<int> rounds;
     for (const Repeat& x : r.repeats) rounds.push_back(x.round);
-    byTime.push_back({r.Each(wall), r.Each(rel), rounds});
-    rmse.push_back({r.Each(wall), r.Each([](const Repeat& x) { return x.error.rmse; }), rounds});
-    bySpp.push_back(
-        {r.Each([](const Repeat& x) { return static_cast<double>(x.spp); }), r.Each(rel), rounds});
+    byTime.push_back({r.Each(WallOf), r.Each(RelMseOf), rounds});
+    rmse.push_back({r.Each(WallOf), r.Each(RmseOf), rounds});
+    bySpp.push_back({r.Each(SppOf), r.Each(RelMseOf), rounds});
   }
   Pcg32 rng(st.variant.args.seed,
             0x510be);  // the bootstrap's own stream: the same data, the same error bar
@@ -371,7 +371,7 @@ int RunConverge(const ConvergeArgs& a) {
     studies.back().rungs.resize(steps.size());
   }
   // The reference's identity (glint's EXR files carry it) against the command's own.
-  CheckSameScene(RenderAttributes(a.render, *studies.front().setup, 0),
+  CheckSameScene(RenderAttributes(a.render, *studies.front().render.setup, 0),
                  ReadImageAttributes(a.reference), "--reference " + a.reference, "this render");
   const int rounds = byTime ? kTimeRounds : kRounds;
   for (int round = 0; round < rounds && !interrupted.load(); ++round) {
@@ -395,12 +395,11 @@ int RunConverge(const ConvergeArgs& a) {
     std::fprintf(stderr, "glint converge: round %d of %d done\n", round + 1, rounds);
   }
   for (std::size_t k = 0; k < steps.size(); ++k) {
-    const double others = studies.front().rungs[k].load.OtherCores();
     for (Study& st : studies) {
       RungResult& r = st.rungs[k];
-      r.otherCores = others;
+      const double others = r.load.OtherCores();
       if (r.repeats.empty()) continue;
-      const std::vector<double> walls = r.Each([](const Repeat& x) { return x.timing.wall; });
+      const std::vector<double> walls = r.Each(WallOf);
       char text[200];
       if (r.Wall() < kFloorSeconds) {
         std::snprintf(text, sizeof text, "rung %zu ran %.3f s in all%s: under the floor of %.1f s",
@@ -414,16 +413,14 @@ int RunConverge(const ConvergeArgs& a) {
                       k, 100.0 * others);
         r.warnings.emplace_back(text);
       }
-      const double mean = MeanOf(r.Each([](const Repeat& x) { return x.error.relativeMse; }));
+      const double mean = MeanOf(r.Each(RelMseOf));
       std::fprintf(stderr,
                    "glint converge: %s, %.0f rays/pixel, %.4f s (median of %zu, %.4f to %.4f; "
                    "CPU %.4f s): relative MSE %.5g, RMSE %.5g; other processes %.0f%% of a core\n",
-                   st.variant.name.c_str(),
-                   MedianOf(r.Each([](const Repeat& x) { return static_cast<double>(x.spp); })),
-                   MedianOf(walls), r.repeats.size(), *std::min_element(walls.begin(), walls.end()),
-                   *std::max_element(walls.begin(), walls.end()),
-                   MedianOf(r.Each([](const Repeat& x) { return x.timing.cpu; })), mean,
-                   MeanOf(r.Each([](const Repeat& x) { return x.error.rmse; })), 100.0 * others);
+                   st.variant.name.c_str(), MedianOf(r.Each(SppOf)), MedianOf(walls),
+                   r.repeats.size(), *std::min_element(walls.begin(), walls.end()),
+                   *std::max_element(walls.begin(), walls.end()), MedianOf(r.Each(CpuOf)), mean,
+                   MeanOf(r.Each(RmseOf)), 100.0 * others);
       for (const std::string& w : r.warnings)
         std::fprintf(stderr, "glint converge: warning: %s\n", w.c_str());
     }

@@ -1,5 +1,6 @@
 #include "job/Checkpoint.hpp"
 
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -41,6 +42,14 @@ std::uint64_t Fingerprint(const std::string& bytes) {
     h *= 1099511628211ULL;
   }
   return h;
+}
+
+std::string FileFingerprint(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(Fingerprint(bytes)));
+  return hex;
 }
 
 void SaveCheckpoint(const std::string& path, const nlohmann::json& identity, const Camera& camera,

@@ -35,5 +35,8 @@ CheckpointProgress LoadCheckpoint(const std::string& path, const nlohmann::json&
 
 // FNV-1a, 64 bits: the scene file's fingerprint in the identity.
 std::uint64_t Fingerprint(const std::string& bytes);
+// The fingerprint of the file at `path`, as 16 hex digits (a checkpoint's identity, an
+// EXR's glint:scene_hash).
+std::string FileFingerprint(const std::string& path);
 
 }  // namespace glint

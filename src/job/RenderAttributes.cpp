@@ -1,9 +1,5 @@
 #include "job/RenderAttributes.hpp"
 
-#include <cstdio>
-#include <fstream>
-#include <iterator>
-
 #include "glint/core/JsonReader.hpp"
 #include "job/Checkpoint.hpp"
 #include "job/Revision.hpp"  // generated in the build tree (cmake/Revision.cmake)
@@ -22,14 +18,10 @@ std::string Quoted(const std::string& s) {
 }  // namespace
 
 ImageAttributes RenderAttributes(const RenderArgs& args, const RenderSetup& s, std::uint64_t spp) {
-  std::ifstream in(args.scene, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  char hash[17];
-  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(Fingerprint(bytes)));
   std::string set;
   for (const std::string& o : args.overrides) set += (set.empty() ? "" : " ") + o;
   ImageAttributes a = {{"scene", args.scene},
-                       {"scene_hash", hash},
+                       {"scene_hash", FileFingerprint(args.scene)},
                        {"set", set},
                        {"size", std::to_string(s.width) + "x" + std::to_string(s.height)},
                        {"mode", args.mode},

@@ -2,8 +2,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
-#include <iterator>
 
 #include "glint/camera/PassSchedule.hpp"
 #include "glint/core/JsonReader.hpp"
@@ -18,12 +16,7 @@ namespace {
 
 // What a checkpoint belongs to: a resume refuses one whose fields differ.
 nlohmann::json RenderIdentity(const RenderArgs& args, const RenderSetup& s) {
-  std::ifstream in(args.scene, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  char fingerprint[17];
-  std::snprintf(fingerprint, sizeof fingerprint, "%016llx",
-                static_cast<unsigned long long>(Fingerprint(bytes)));
-  nlohmann::json j = {{"scene file contents", fingerprint},
+  nlohmann::json j = {{"scene file contents", FileFingerprint(args.scene)},
                       {"--set", args.overrides},
                       {"--size", std::to_string(s.width) + "x" + std::to_string(s.height)},
                       {"--seed", args.seed},

@@ -63,7 +63,7 @@ def edited(token, factor):
     value, _ = tolerance(token)
     text = token.rstrip("%")
     decimals = len(text.split("e")[0].split(".")[1]) if "." in text.split("e")[0] else 0
-    new = value * factor + 1
+    new = value * factor + factor  # distinct for every factor, also when value is 0
     if token.endswith("%"):
         return f"{100 * new:.{decimals}f}%"
     if "e" in text:

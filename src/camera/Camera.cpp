@@ -43,39 +43,37 @@ double Camera::ViewPlaneDistanceFor(const Wall& room, vec3 eye, double given) {
   return eye.z - (room.Position().z + room.Size());
 }
 
-Camera::Camera(const Wall& room, vec3 eye, int width, int height, double viewPlaneDistance)
-    : eye_(eye), width_(width), height_(height) {
+Pinhole Camera::GeometryFor(const Wall& room, const CameraSettings& settings, int width,
+                            int height) {
+  const vec3 eye = settings.eye;
   if (width <= 0 || height <= 0) throw std::invalid_argument("image size must be positive");
   if (!EyeOnAxis(room, eye)) {
     throw std::invalid_argument(
         "the eye must lie on the line through the centre of the back wall, in front of "
         "the room's open side");
   }
-  const vec3 back = room.Centre() - vec3(0.0, 0.0, 0.5 * room.Size());
-  if (viewPlaneDistance < 0.0 || !std::isfinite(viewPlaneDistance)) {
+  const double given = settings.viewPlaneDistance;
+  if (given < 0.0 || !std::isfinite(given)) {
     throw std::invalid_argument("the view plane distance must be positive (0: the set-up rule)");
   }
-  viewDirection_ = glm::normalize(back - eye);
-  viewPlaneDistance_ = ViewPlaneDistanceFor(room, eye, viewPlaneDistance);
-  halfHeight_ = 0.5 * room.Size();
+  const vec3 back = room.Centre() - vec3(0.0, 0.0, 0.5 * room.Size());
+  const double halfHeight = 0.5 * room.Size();
   // A non-square image keeps square pixels: the plane widens with the aspect ratio.
-  halfWidth_ = halfHeight_ * static_cast<double>(width) / static_cast<double>(height);
-  planeCentre_ = eye_ + viewPlaneDistance_ * viewDirection_;
-  pixelWidth_ = 2.0 * halfWidth_ / static_cast<double>(width);
-  pixelHeight_ = 2.0 * halfHeight_ / static_cast<double>(height);
+  const double halfWidth = halfHeight * static_cast<double>(width) / static_cast<double>(height);
+  return {eye,
+          glm::normalize(back - eye),
+          ViewPlaneDistanceFor(room, eye, given),
+          halfWidth,
+          halfHeight,
+          width,
+          height};
+}
+
+Camera::Camera(const Wall& room, vec3 eye, int width, int height, double viewPlaneDistance)
+    : pinhole_(GeometryFor(room, CameraSettings{eye, viewPlaneDistance}, width, height)),
+      width_(width),
+      height_(height) {
   pixels_.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
-}
-
-vec3 Camera::ViewPlanePoint(double px, double py) const {
-  // Image x grows to the right (+x in the world), image y grows downward (-y).
-  // pixelWidth_ = 2 halfWidth / W, set once: no division per ray.
-  const double sx = px * pixelWidth_ - halfWidth_;
-  const double sy = halfHeight_ - py * pixelHeight_;
-  return planeCentre_ + vec3(sx, sy, 0.0);
-}
-
-vec3 Camera::DirectionThrough(double px, double py) const {
-  return glm::normalize(ViewPlanePoint(px, py) - eye_);
 }
 
 RenderStats Camera::RenderChunks(const Integrator& integrator, const RenderOptions& options,
@@ -106,6 +104,9 @@ RenderStats Camera::RenderChunks(const Integrator& integrator, const RenderOptio
                             sampler, trees, stats, false, options.cancel);
         if (pass.complete) {
           pixel.Add(pass);
+          // The chunk's light paths go with its first pixel, uncancelled: they are done
+          // exactly when it is, which a checkpoint records and a resume reads.
+          if (i == chunk * kChunk) TraceChunkLightPaths(integrator, options, chunk, end - i, stats);
         } else if (pass.samples > 0) {
 #pragma omp critical(glint_cut_short)
           cutShort_.emplace_back(static_cast<std::size_t>(i), pass);
@@ -126,6 +127,19 @@ RenderStats Camera::RenderChunks(const Integrator& integrator, const RenderOptio
                      static_cast<std::size_t>(count));
   }
   return total;
+}
+
+void Camera::TraceChunkLightPaths(const Integrator& integrator, const RenderOptions& options,
+                                  int chunk, int pixels, RenderStats& stats) {
+  const int perRay = integrator.LightPathsPerRay();
+  if (perRay == 0) return;
+  const std::uint64_t perSample =
+      static_cast<std::uint64_t>(perRay) * static_cast<std::uint64_t>(pixels);
+  const int paths = static_cast<int>(perSample) * options.raysPerPixel;
+  // Its own stream, continuing one sobol sequence from pass to pass as a pixel's does.
+  Sampler sampler(options.sampler, options.seed, LightStream(chunk), options.pass,
+                  options.firstSample * perSample, paths);
+  integrator.TraceLightPaths(*this, sampler, paths, stats);
 }
 
 void Camera::PrepareShafts(const Scene& scene, PixelShaft::Lights lights, int threads) {

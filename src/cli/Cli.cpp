@@ -61,7 +61,8 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
   conv->add_option("--compare", converge.compare,
                    "Compare values of one switch in one chart: strategy=mis,light,brdf, "
                    "glass=split,choose, fresnel=exact,small-angle, walls=terminal,diffuse, "
-                   "branches=1,2,4, sampler=random,stratified,sobol or mirror-light=nee,brdf");
+                   "branches=1,2,4, sampler=random,stratified,sobol, mirror-light=nee,brdf or "
+                   "caustics=off,light");
   TreeArgs tree;
   CLI::App* treeCommand = app.add_subcommand(
       "tree",

@@ -131,6 +131,14 @@ void AddRenderOptions(CLI::App* render, RenderArgs& args, bool outputs) {
       ->check(CLI::IsMember(kMirrorLightModes))
       ->capture_default_str();
   render
+      ->add_option("--caustics", args.caustics,
+                   "Monte Carlo with diffuse walls: the caustics a wall receives through the "
+                   "glass, mirrors and Phong objects found by 'light' tracing as well (paths "
+                   "from the light joined to the eye, weighted against the camera's by "
+                   "multiple importance sampling) or by the camera's paths alone ('off')")
+      ->check(CLI::IsMember(kCausticsModes))
+      ->capture_default_str();
+  render
       ->add_option("--sampler", args.sampler,
                    "Both modes: where each random decision's numbers come from: 'random' "
                    "(independent uniforms, the design's random number generator), "

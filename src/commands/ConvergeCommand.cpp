@@ -87,6 +87,9 @@ std::vector<Variant> ParseVariants(const ConvergeArgs& a) {
     } else if (key == "mirror-light") {
       allow(kMirrorLightModes);
       v.args.mirrorLight = value;
+    } else if (key == "caustics") {
+      allow(kCausticsModes);
+      v.args.caustics = value;
     } else if (key == "branches") {
       const int b = std::atoi(value.c_str());
       if (b < 1 || b > MonteCarloIntegrator::kMaxBranches || std::to_string(b) != value) {
@@ -96,7 +99,8 @@ std::vector<Variant> ParseVariants(const ConvergeArgs& a) {
     } else {
       throw InputError(
           "--compare " + a.compare +
-          ": KEY must be strategy, glass, fresnel, walls, branches, sampler or mirror-light");
+          ": KEY must be strategy, glass, fresnel, walls, branches, sampler, mirror-light "
+          "or caustics");
     }
     out.push_back(v);
   }

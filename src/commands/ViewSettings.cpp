@@ -74,6 +74,8 @@ RenderArgs ArgsFromQuery(const RenderArgs& base, const QueryParams& query) {
       args.glass = Choice(key, value, kGlassModes);
     } else if (key == "mirror-light") {
       args.mirrorLight = Choice(key, value, kMirrorLightModes);
+    } else if (key == "caustics") {
+      args.caustics = Choice(key, value, kCausticsModes);
     } else if (key == "branches") {
       args.branches =
           static_cast<int>(WholeNumber(key, value, 1, MonteCarloIntegrator::kMaxBranches));
@@ -90,7 +92,8 @@ RenderArgs ArgsFromQuery(const RenderArgs& base, const QueryParams& query) {
     } else if (key != "exposure") {
       throw InputError(
           "unknown setting '" + key +
-          "': expected mode, walls, strategy, glass, mirror-light, branches, fresnel, sampler, "
+          "': expected mode, walls, strategy, glass, mirror-light, caustics, branches, fresnel, "
+          "sampler, "
           "seed, set or exposure");
     }
     for (const char* name : kMonteCarloSwitches) {
@@ -106,6 +109,7 @@ nlohmann::json SettingsJson(const RenderArgs& args) {
           {"strategy", args.strategy},
           {"glass", args.glass},
           {"mirror-light", args.mirrorLight},
+          {"caustics", args.caustics},
           {"branches", args.branches},
           {"fresnel", args.fresnel},
           {"sampler", args.sampler},

@@ -12,11 +12,12 @@ namespace glint {
 
 namespace {
 
-constexpr const char* kMagic = "glint checkpoint 1\n";
+constexpr const char* kMagic = "glint checkpoint 2\n";
 
-// Per pixel: the sum (3 doubles), the samples (uint64) and the complete passes (uint32).
+// Per pixel: the sum (3 doubles), the samples (uint64), the complete passes (uint32) and
+// light tracing's splats (3 int64, Pixel::SplatSum).
 constexpr std::size_t kPixelBytes =
-    3 * sizeof(double) + sizeof(std::uint64_t) + sizeof(std::uint32_t);
+    3 * sizeof(double) + sizeof(std::uint64_t) + sizeof(std::uint32_t) + 3 * sizeof(std::int64_t);
 
 template <typename T>
 void Put(std::string& out, T value) {
@@ -71,6 +72,7 @@ void SaveCheckpoint(const std::string& path, const nlohmann::json& identity, con
     Put(out, s.z);
     Put(out, p.Samples());
     Put(out, p.Passes());
+    for (const std::int64_t v : p.Splats()) Put(out, v);
   }
   WriteFileAtomically(path, out);
 }
@@ -111,7 +113,10 @@ CheckpointProgress LoadCheckpoint(const std::string& path, const nlohmann::json&
     const double b = Get<double>(p);
     const auto samples = Get<std::uint64_t>(p);
     const auto passes = Get<std::uint32_t>(p);
+    Pixel::SplatSum splats{};
+    for (std::int64_t& v : splats) v = Get<std::int64_t>(p);
     camera.PixelAt(i).Restore(Colour(r, g, b), samples, passes);
+    camera.PixelAt(i).RestoreSplats(splats);
   }
   CheckpointProgress progress;
   progress.passes = header.at("passes");

@@ -44,8 +44,47 @@ RenderStats StatsAt(const double* p) {
   for (std::size_t i = 0; i < c.size(); ++i) c[i] = static_cast<std::uint64_t>(p[i]);
   return RenderStats::FromCounters(c);
 }
-// A result: first chunk, last chunk, abandoned, the counters, then the pixels.
+// A result: first chunk, last chunk, abandoned, the counters, then the pixels, then light
+// tracing's splats (anywhere in the image): their number, and per splat the pixel and
+// each component's 64-bit sum as two 32-bit halves (doubles hold them exactly).
 constexpr std::size_t kHeader = 3 + std::tuple_size_v<RenderStats::Counters>;
+constexpr std::size_t kPerSplat = 7;
+
+// Moves this rank's splats into `out` and clears them.
+void TakeSplats(Camera& camera, std::vector<double>& out) {
+  const std::size_t at = out.size();
+  out.push_back(0.0);
+  const std::size_t count =
+      static_cast<std::size_t>(camera.Width()) * static_cast<std::size_t>(camera.Height());
+  for (std::size_t i = 0; i < count; ++i) {
+    Pixel& pixel = camera.PixelAt(i);
+    const Pixel::SplatSum& s = pixel.Splats();
+    if (s[0] == 0 && s[1] == 0 && s[2] == 0) continue;
+    out.push_back(static_cast<double>(i));
+    for (const std::int64_t v : s) {
+      const auto bits = static_cast<std::uint64_t>(v);
+      out.push_back(static_cast<double>(bits >> 32U));
+      out.push_back(static_cast<double>(bits & 0xffffffffULL));
+    }
+    pixel.RestoreSplats({});
+    out[at] += 1.0;
+  }
+}
+
+// Adds the splats TakeSplats wrote at `p`.
+void AddSplats(Camera& camera, const double* p) {
+  const auto count = static_cast<std::size_t>(p[0]);
+  ++p;
+  for (std::size_t k = 0; k < count; ++k, p += kPerSplat) {
+    Pixel::SplatSum s{};
+    for (std::size_t c = 0; c < 3; ++c) {
+      const std::uint64_t bits = (static_cast<std::uint64_t>(p[1 + 2 * c]) << 32U) |
+                                 static_cast<std::uint64_t>(p[2 + 2 * c]);
+      s[c] = static_cast<std::int64_t>(bits);
+    }
+    camera.PixelAt(static_cast<std::size_t>(p[0])).AddSplats(s);
+  }
+}
 #endif
 
 }  // namespace
@@ -122,6 +161,8 @@ void Cluster::RootPass(Camera& camera, const Integrator& integrator, const Rende
       pass.samples = static_cast<std::uint64_t>(p[3]);
       camera.PixelAt(i).Add(pass);  // in pass order, as one process adds it
     }
+    // Integer sums: the same whatever order the ranges come in (Pixel::AddSplat).
+    AddSplats(camera, &buffer[kHeader + (last - first) * kPerPixel]);
   };
   // Answers what the other ranks sent: requests first (small, and a rank waits on
   // them; a tag of their own lets them pass a large result queued before them), then
@@ -262,6 +303,7 @@ void Cluster::WorkerPass(Camera& camera, const Integrator& integrator,
       const Colour s = pixel.Sum();
       buffer.insert(buffer.end(), {s.x, s.y, s.z, static_cast<double>(pixel.Samples())});
     }
+    TakeSplats(camera, buffer);
     MPI_Isend(buffer.data(), static_cast<int>(buffer.size()), MPI_DOUBLE, 0, kResult,
               MPI_COMM_WORLD, &out.request);
     ++messages_;

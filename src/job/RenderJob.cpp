@@ -31,6 +31,7 @@ nlohmann::json RenderIdentity(const RenderArgs& args, const RenderSetup& s) {
     j["--strategy"] = args.strategy;
     j["--branches"] = args.branches;
     j["--mirror-light"] = args.mirrorLight;
+    j["--caustics"] = args.caustics;
   }
   return j;
 }

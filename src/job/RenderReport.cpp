@@ -34,8 +34,11 @@ std::string StatsJson(const RenderArgs& args, const RenderSetup& s, const Camera
   // not traced and are counted apart.
   j["rays"] = {{"camera", st.cameraRays},         {"reflected", st.reflectedRays},
                {"refracted", st.refractedRays},   {"diffuse", st.diffuseRays},
-               {"shadow", st.ShadowRaysTraced()}, {"traced", st.TracedRays()}};
+               {"shadow", st.ShadowRaysTraced()}, {"light", st.lightRays},
+               {"traced", st.TracedRays()}};
   j["visibility_answered_without_a_ray"] = st.shadowRaysByShaft;
+  // Light tracing (--caustics light): its joins to the eye that added to a pixel.
+  j["splats"] = st.splats;
   if (!args.resume.empty()) {
     // What the checkpoint held: this session traced `rays` minus these.
     j["resumed"] = {{"passes", r.resumedPasses},
@@ -53,7 +56,8 @@ std::string StatsJson(const RenderArgs& args, const RenderSetup& s, const Camera
   if (args.mode == "mc") {
     j["mc"] = {{"walls", args.walls},       {"glass", args.glass},
                {"fresnel", args.fresnel},   {"strategy", args.strategy},
-               {"branches", args.branches}, {"mirror_light", args.mirrorLight}};
+               {"branches", args.branches}, {"mirror_light", args.mirrorLight},
+               {"caustics", args.caustics}};
   }
   j["view_plane_distance"] = camera.ViewPlaneDistance();
   return j.dump(2) + "\n";
@@ -76,6 +80,10 @@ void PrintSummary(const RenderArgs& args, const RenderSetup& s, const RenderResu
                static_cast<double>(st.ShadowRaysTraced()),
                traced / (r.seconds > 0.0 ? r.seconds : 1e-9) / 1e6,
                static_cast<double>(st.shadowRaysByShaft));
+  if (st.lightRays > 0) {
+    std::fprintf(stderr, "; light tracing %.3g of the rays, %.3g joined to the eye",
+                 static_cast<double>(st.lightRays), static_cast<double>(st.splats));
+  }
   if (st.nonFiniteSamples > 0) {
     std::fprintf(stderr, ", %llu NaN/Inf samples dropped",
                  static_cast<unsigned long long>(st.nonFiniteSamples));

@@ -126,6 +126,10 @@ RenderSetup Prepare(const RenderArgs& args, bool checkOutputs) {
       throw InputError(name + ": means nothing with --walls " + args.walls +
                        " (the light seen in a mirror reaches a wall only with --walls diffuse)");
     }
+    if (args.walls != "diffuse" && name.find("caustics") != std::string::npos) {
+      throw InputError(name + ": means nothing with --walls " + args.walls +
+                       " (a caustic lights a wall only with --walls diffuse)");
+    }
   }
   RenderSetup s;
   s.scene = LoadScene(args.scene, args.overrides);
@@ -177,6 +181,7 @@ MonteCarloOptions McOptions(const RenderArgs& args, const ModeSettings& mode) {
                                          : O::Strategy::Mis;
   o.branches = args.branches;
   o.mirrorLight = args.mirrorLight == "brdf" ? O::MirrorLight::Brdf : O::MirrorLight::Nee;
+  o.caustics = args.caustics == "light" ? O::Caustics::Light : O::Caustics::Off;
   o.maxDepth = mode.maxDepth;
   return o;
 }
@@ -184,8 +189,11 @@ MonteCarloOptions McOptions(const RenderArgs& args, const ModeSettings& mode) {
 }  // namespace
 
 std::unique_ptr<Integrator> MakeIntegrator(const RenderArgs& args, const RenderSetup& s) {
-  if (args.mode == "mc")
-    return std::make_unique<MonteCarloIntegrator>(s.scene, McOptions(args, s.mode));
+  if (args.mode == "mc") {
+    return std::make_unique<MonteCarloIntegrator>(
+        s.scene, McOptions(args, s.mode),
+        Camera::GeometryFor(s.scene.wall, s.scene.camera, s.width, s.height));
+  }
   const FresnelModel fresnel =
       args.fresnel == "small-angle" ? FresnelModel::SmallAngle : FresnelModel::Exact;
   return std::make_unique<WhittedIntegrator>(s.scene, s.mode.maxDepth, fresnel);

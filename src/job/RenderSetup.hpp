@@ -34,6 +34,7 @@ struct RenderArgs {
   std::string strategy = "mis";
   int branches = 1;
   std::string mirrorLight = "nee";
+  std::string caustics = "off";
   std::string sampler = "sobol";  // the equal-time study's winner (BENCHMARKS.md)
   // The Monte Carlo switches given on the command line (--walls, ...): with --mode
   // whitted they mean nothing, and Prepare refuses them.
@@ -55,11 +56,12 @@ inline const std::vector<std::string> kGlassModes = {"split", "choose"};
 inline const std::vector<std::string> kFresnelModels = {"exact", "small-angle"};
 inline const std::vector<std::string> kStrategies = {"mis", "light", "brdf"};
 inline const std::vector<std::string> kMirrorLightModes = {"nee", "brdf"};
+inline const std::vector<std::string> kCausticsModes = {"off", "light"};
 inline const std::vector<std::string> kSamplers = {"random", "stratified", "sobol"};
 
 // The switches that mean something in Monte Carlo mode only.
-inline constexpr const char* kMonteCarloSwitches[] = {"--walls", "--branches", "--glass",
-                                                      "--strategy", "--mirror-light"};
+inline constexpr const char* kMonteCarloSwitches[] = {"--walls",    "--branches",     "--glass",
+                                                      "--strategy", "--mirror-light", "--caustics"};
 
 // The --sampler of the command line (checked by the parser).
 SamplerKind SamplerFromArgs(const RenderArgs& args);

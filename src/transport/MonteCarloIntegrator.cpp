@@ -16,7 +16,8 @@ const Light& RequireLight(const Scene& scene) {
 }
 }  // namespace
 
-MonteCarloIntegrator::MonteCarloIntegrator(const Scene& scene, MonteCarloOptions options)
+MonteCarloIntegrator::MonteCarloIntegrator(const Scene& scene, MonteCarloOptions options,
+                                           std::optional<Pinhole> camera)
     : scene_(scene),
       light_(RequireLight(scene)),
       options_(options),
@@ -29,6 +30,13 @@ MonteCarloIntegrator::MonteCarloIntegrator(const Scene& scene, MonteCarloOptions
   }
   if (!(options_.rouletteThreshold > 0.0)) {
     throw std::invalid_argument("the roulette threshold must be positive");
+  }
+  if (options_.caustics == MonteCarloOptions::Caustics::Light) {
+    if (options_.walls != MonteCarloOptions::Walls::Diffuse) {
+      throw std::invalid_argument("caustics by light tracing need diffuse walls");
+    }
+    if (!camera) throw std::invalid_argument("caustics by light tracing need the camera");
+    tracer_.emplace(scene_, light_, options_, *camera, !useMirrored_);
   }
 }
 
@@ -119,6 +127,37 @@ int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, std::u
   return 0;
 }
 
+void MonteCarloIntegrator::SetCausticRatios(const Ray& ray, const Hit& hit, vec3 n,
+                                            Candidate* candidates, int count) const {
+  switch (hit.material->type) {
+    case MaterialType::Lambertian:
+      // A wall the camera sees: its cosine-sampled ray may find a caustic path, which the
+      // light's paths find too (LightTracer.hpp); deeper walls pass r on unchanged (the
+      // cosine densities of the two sides are equal in projected solid angle).
+      if (count > 0) {
+        candidates[0].causticRatio =
+            ray.kind == RayKind::Camera ? tracer_->CameraRatio(hit.point, n) : ray.causticRatio;
+      }
+      return;
+    case MaterialType::Mirror:
+    case MaterialType::Glass:
+      for (int i = 0; i < count; ++i) candidates[i].causticRatio = ray.causticRatio;
+      return;
+    case MaterialType::Phong: {
+      if (ray.causticRatio == 0.0) return;
+      const double cosEye = -glm::dot(n, ray.direction);
+      for (int i = 0; i < count; ++i) {
+        const double cosLight = glm::dot(n, candidates[i].direction);
+        if (cosLight > 0.0) {
+          candidates[i].causticRatio =
+              ray.causticRatio * LightTracer::PhongFactor(cosLight, cosEye, options_.branches);
+        }
+      }
+      return;
+    }
+  }
+}
+
 Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::uint32_t root,
                                        Sampler& sampler, RenderStats& stats,
                                        PixelShaft shaft) const {
@@ -167,8 +206,9 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::
   } else if (m.type == MaterialType::Phong && options_.strategy != Strategy::Brdf) {
     const double misBranches =
         options_.strategy == Strategy::Mis ? static_cast<double>(options_.branches) : 0.0;
-    colour += DirectLight(hit, ray.direction, n, misBranches,
-                          sampler.Get2D(SampleDimension::Light(node)), stats);
+    colour +=
+        DirectLight(hit, ray.direction, n, misBranches, sampler.Get2D(SampleDimension::Light(node)),
+                    stats, false, ray.causticRatio);
   }
 
   // Read late: the node was written just before this call, and a load right after
@@ -177,6 +217,7 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::
   const int depth = ray.depth;
   Candidate candidates[kMaxBranches];
   int count = depth + 1 < options_.maxDepth ? Scatter(ray, hit, n, node, sampler, candidates) : 0;
+  if (tracer_) SetCausticRatios(ray, hit, n, candidates, count);
   // Russian roulette by throughput relative to the camera ray, whose importance is
   // 1/N: survive with q = min(1, beta / threshold), then divide by q. (The root
   // is read here, not before tracing: a load right after the store that wrote it stalls.)
@@ -210,6 +251,7 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::
     child.kind = c.kind;
     child.inside = c.inside;
     child.lightCounted = c.lightCounted;
+    child.causticRatio = c.causticRatio;
     child.depth = static_cast<std::uint8_t>(depth + 1);
     switch (c.kind) {
       case RayKind::Refracted:

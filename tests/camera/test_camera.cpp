@@ -124,5 +124,16 @@ TEST(Camera, MonteCarloImageDoesNotDependOnTheThreadCount) {
   ExpectSameForOneAndTwoThreads(scene, MonteCarloIntegrator(scene, o), 33, 17, 8, 7);
 }
 
+TEST(Camera, LightTracingsSplatsDoNotDependOnTheThreadCount) {
+  // Light paths land in any pixel, from any thread: their sums are integers (Pixel::AddSplat).
+  const Scene scene = testing::CanonicalScene();
+  MonteCarloOptions o;
+  o.walls = MonteCarloOptions::Walls::Diffuse;
+  o.caustics = MonteCarloOptions::Caustics::Light;
+  const MonteCarloIntegrator integrator(scene, o,
+                                        Camera::GeometryFor(scene.wall, scene.camera, 33, 17));
+  ExpectSameForOneAndTwoThreads(scene, integrator, 33, 17, 8, 7);
+}
+
 }  // namespace
 }  // namespace glint

@@ -12,29 +12,35 @@ launch=("$@")
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 status=0
-# Two threads wherever it runs: a many-core machine would finish before the kill.
-flags=(--mode mc --size 96 --spp 4096 --threads 2 -q)
-"$glint" render "$scene" "${flags[@]}" -o "$dir/through.pfm" --stats "$dir/through.json"
-"${launch[@]}" "$glint" render "$scene" "${flags[@]}" -o "$dir/killed.pfm" \
-  --checkpoint "$dir/ck" --checkpoint-every 0.1 &
-pid=$!
-# Kill as soon as the first checkpoint appears (written atomically: complete when seen).
-for _ in $(seq 1 1000); do
-  [ -f "$dir/ck" ] && break
-  sleep 0.01
-done
-kill -KILL "$pid"
-wait "$pid" 2>/dev/null
-pkill -KILL -f "$dir/killed.pfm" 2>/dev/null  # a launcher's children, if any survived it
-[ -f "$dir/ck" ] || { echo "FAIL: no checkpoint after SIGKILL"; exit 1; }
-[ ! -f "$dir/killed.pfm" ] || { echo "FAIL: the killed render finished before the kill"; exit 1; }
-echo "checkpoint: $(head -c 200 "$dir/ck" | sed -n 2p | cut -c1-150)..."
-"${launch[@]}" "$glint" render "$scene" "${flags[@]}" -o "$dir/resumed.pfm" --resume "$dir/ck" \
-  --stats "$dir/resumed.json" || { echo "FAIL: the resume failed"; status=1; }
-# The resumed render's counters: the checkpoint's part and this session's add up to the
-# render that ran through, camera ray for camera ray, and this session traced only the
-# rest (a resume that ignored the checkpoint would trace all of it again).
-/usr/bin/python3 - "$dir/through.json" "$dir/resumed.json" <<'PY' || status=1
+# Two threads wherever it runs: a many-core machine would finish before the kill. First
+# with light tracing (its splats land anywhere in the image, and a chunk's go with its
+# first pixel), then the design's terminal walls, whose checkpoint the checks below use.
+for case in "--walls diffuse --caustics light --spp 1024" "--spp 4096"; do
+  read -ra extra <<< "$case"
+  flags=(--mode mc --size 96 --threads 2 -q "${extra[@]}")
+  rm -f "$dir"/through.* "$dir"/killed.* "$dir"/resumed.* "$dir/ck"
+  echo "== $case"
+  "$glint" render "$scene" "${flags[@]}" -o "$dir/through.pfm" --stats "$dir/through.json"
+  "${launch[@]}" "$glint" render "$scene" "${flags[@]}" -o "$dir/killed.pfm" \
+    --checkpoint "$dir/ck" --checkpoint-every 0.1 &
+  pid=$!
+  # Kill as soon as the first checkpoint appears (written atomically: complete when seen).
+  for _ in $(seq 1 1000); do
+    [ -f "$dir/ck" ] && break
+    sleep 0.01
+  done
+  kill -KILL "$pid"
+  wait "$pid" 2>/dev/null
+  pkill -KILL -f "$dir/killed.pfm" 2>/dev/null  # a launcher's children, if any survived it
+  [ -f "$dir/ck" ] || { echo "FAIL: no checkpoint after SIGKILL"; exit 1; }
+  [ ! -f "$dir/killed.pfm" ] || { echo "FAIL: the killed render finished before the kill"; exit 1; }
+  echo "checkpoint: $(head -c 200 "$dir/ck" | sed -n 2p | cut -c1-150)..."
+  "${launch[@]}" "$glint" render "$scene" "${flags[@]}" -o "$dir/resumed.pfm" --resume "$dir/ck" \
+    --stats "$dir/resumed.json" || { echo "FAIL: the resume failed"; status=1; }
+  # The resumed render's counters: the checkpoint's part and this session's add up to the
+  # render that ran through, camera ray for camera ray, and this session traced only the
+  # rest (a resume that ignored the checkpoint would trace all of it again).
+  /usr/bin/python3 - "$dir/through.json" "$dir/resumed.json" <<'PY' || status=1
 import json, sys
 through, resumed = (json.load(open(p)) for p in sys.argv[1:3])
 total = through["rays"]["camera"]
@@ -47,12 +53,13 @@ if not ok:
     print("FAIL: the resumed render did not trace exactly what the checkpoint lacked")
 sys.exit(0 if ok else 1)
 PY
-if cmp -s "$dir/through.pfm" "$dir/resumed.pfm"; then
-  echo "resumed after SIGKILL: the same image, bit for bit, as the render that ran through"
-else
-  echo "FAIL: the resumed image differs from the one that ran through"
-  status=1
-fi
+  if cmp -s "$dir/through.pfm" "$dir/resumed.pfm"; then
+    echo "resumed after SIGKILL: the same image, bit for bit, as the render that ran through"
+  else
+    echo "FAIL: the resumed image differs from the one that ran through"
+    status=1
+  fi
+done
 out=$("$glint" render "$scene" --mode mc --size 96 --spp 4096 --seed 2 -q -o "$dir/x.pfm" \
       --resume "$dir/ck" 2>&1)
 code=$?

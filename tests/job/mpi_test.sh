@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # mpi_test.sh GLINT SCENE: glint under mpirun (OpenMPI from tools/setup.sh). The image of
 # 1, 2 and 3 ranks is the same, bit for bit, as one process's, in both modes and both wall
-# modes; --time holds across 2 ranks; bad input fails fast with one message; an interrupt
+# modes, and with light tracing's splats (--caustics light); --time holds across 2 ranks; bad input fails fast with one message; an interrupt
 # saves the partial image; ranks default to the node's cores divided among them.
 set -u
 glint=$1
@@ -11,7 +11,7 @@ command -v mpirun > /dev/null || { echo "FAIL: mpirun is not installed (tools/se
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 status=0
-for mode in "whitted" "mc" "mc --walls diffuse"; do
+for mode in "whitted" "mc" "mc --walls diffuse" "mc --walls diffuse --caustics light"; do
   read -ra m <<< "--mode $mode"
   "$glint" render "$scene" "${m[@]}" --size 48x40 --spp 16 --seed 7 -q -o "$dir/one.pfm"
   for np in 1 2 3; do

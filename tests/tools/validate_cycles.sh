@@ -15,24 +15,29 @@ if ! command -v blender > /dev/null; then
   exit 1
 fi
 status=0
-check() {  # scene (in scenes/, or a path) walls glint_spp cycles_spp
-  local scene=$1 walls=$2 gspp=$3 cspp=$4 name
-  name=$(basename "$scene" .json)-$walls
+rm -f ./*-cycles-*.pfm  # Cycles' renders are made once a run, and shared by its checks
+check() {  # scene (in scenes/, or a path) walls glint_spp cycles_spp [glint's switches...]
+  local scene=$1 walls=$2 gspp=$3 cspp=$4 name cname
+  shift 4
+  cname=$(basename "$scene" .json)-$walls
+  name=$cname$(printf '%s' "$*" | tr -c 'a-z0-9' '-')
   case $scene in /*) ;; *) scene=$src/scenes/$scene ;; esac
   for seed in 1 2; do
     "$glint" render "$scene" --mode mc --walls "$walls" --size 64 --spp "$gspp" \
-      --seed "$seed" -q -o "$name-glint-$seed.pfm"
-    "$src/tools/cycles-render" "$scene" --mode mc --walls "$walls" --size 64 \
-      --spp "$cspp" --seed "$seed" -o "$name-cycles-$seed.pfm"
+      --seed "$seed" -q -o "$name-glint-$seed.pfm" "$@"
+    [ -f "$cname-cycles-$seed.pfm" ] || "$src/tools/cycles-render" "$scene" --mode mc \
+      --walls "$walls" --size 64 --spp "$cspp" --seed "$seed" -o "$cname-cycles-$seed.pfm"
   done
   echo "$name:"
   if ! "$glint" compare "$name-glint-1.pfm" "$name-glint-2.pfm" \
-      "$name-cycles-1.pfm" "$name-cycles-2.pfm"; then
+      "$cname-cycles-1.pfm" "$cname-cycles-2.pfm"; then
     status=1
   fi
 }
 check cornell-mirror.json terminal 1024 2048
 check cornell-mirror.json diffuse 4096 2048
+# Light tracing's caustics (--caustics light) against the same Cycles renders.
+check cornell-mirror.json diffuse 2048 2048 --caustics light
 check cornell-lambert.json terminal 1024 2048
 check cornell-lambert.json diffuse 4096 2048
 # The view plane twice as far (its size kept): half the field of view, in both renderers.

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "glint/camera/Integrator.hpp"
+#include "glint/camera/Pinhole.hpp"
 #include "glint/camera/Pixel.hpp"
 #include "glint/camera/RenderStats.hpp"
 #include "glint/image/Image.hpp"
@@ -56,20 +57,26 @@ class Camera {
   // the back wall, orthogonal to it, in front of the room's open side.
   static bool EyeOnAxis(const Wall& room, vec3 eye);
 
-  vec3 Eye() const { return eye_; }
-  vec3 ViewDirection() const { return viewDirection_; }
-  double ViewPlaneDistance() const { return viewPlaneDistance_; }
+  vec3 Eye() const { return pinhole_.Eye(); }
+  vec3 ViewDirection() const { return pinhole_.ViewDirection(); }
+  double ViewPlaneDistance() const { return pinhole_.Distance(); }
   // Half the width and height of the view plane, in metres.
-  double HalfWidth() const { return halfWidth_; }
-  double HalfHeight() const { return halfHeight_; }
+  double HalfWidth() const { return pinhole_.HalfWidth(); }
+  double HalfHeight() const { return pinhole_.HalfHeight(); }
   int Width() const { return width_; }
   int Height() const { return height_; }
+  // The geometry alone (the rays, the importance for light tracing).
+  const Pinhole& Geometry() const { return pinhole_; }
+  // The geometry of the camera a scene file describes, at width x height pixels, without
+  // its pixels (the integrators' light tracing needs it before a Camera exists).
+  static Pinhole GeometryFor(const Wall& room, const CameraSettings& settings, int width,
+                             int height);
 
   // The point of the view plane at image coordinates (px, py) in [0, W] x [0, H],
   // (0, 0) being the top-left corner of pixel (0, 0).
-  vec3 ViewPlanePoint(double px, double py) const;
+  vec3 ViewPlanePoint(double px, double py) const { return pinhole_.ViewPlanePoint(px, py); }
   // Unit direction from the eye through image coordinates (px, py).
-  vec3 DirectionThrough(double px, double py) const;
+  vec3 DirectionThrough(double px, double py) const { return pinhole_.DirectionThrough(px, py); }
 
   // Adds one pass over every pixel, in parallel over pixels. The result depends on the
   // seed and the pass only, never on the number of threads: each pixel has its own
@@ -90,6 +97,22 @@ class Camera {
   // `lights`: the shadow rays the integrator casts (Integrator::ShadowLights).
   void PrepareShafts(const Scene& scene, PixelShaft::Lights lights, int threads = 0);
 
+  // Light tracing's contribution c to pixel i, from any thread (Pixel::AddSplat); one
+  // too large to add is counted as a non-finite sample.
+  void Splat(std::size_t i, Colour c, RenderStats& stats) {
+    if (pixels_[i].AddSplat(c)) {
+      ++stats.splats;
+    } else {
+      ++stats.nonFiniteSamples;
+    }
+  }
+  // The stream of chunk `chunk`'s light paths in a pass: a pixel index past the image's,
+  // so that no pixel shares it.
+  std::uint64_t LightStream(int chunk) const {
+    return static_cast<std::uint64_t>(width_) * static_cast<std::uint64_t>(height_) +
+           static_cast<std::uint64_t>(chunk);
+  }
+
   // Forgets all passes.
   void Clear();
   // Passes a cancel cut short: in the image (what was rendered is saved), not in the
@@ -104,19 +127,16 @@ class Camera {
   Image ToImage(int threads = 1) const;
 
  private:
+  // Chunk `chunk`'s share of the pass's light paths (Integrator::LightPathsPerRay times
+  // its `pixels` and the rays per pixel).
+  void TraceChunkLightPaths(const Integrator& integrator, const RenderOptions& options, int chunk,
+                            int pixels, RenderStats& stats);
   std::size_t Index(int x, int y) const {
     return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
            static_cast<std::size_t>(x);
   }
 
-  vec3 eye_;
-  vec3 viewDirection_{0.0, 0.0, -1.0};
-  vec3 planeCentre_;
-  double viewPlaneDistance_;
-  double halfWidth_;
-  double halfHeight_;
-  double pixelWidth_ = 0.0;  // the view plane's extent of one pixel, in metres
-  double pixelHeight_ = 0.0;
+  Pinhole pinhole_;
   int width_;
   int height_;
   std::vector<Pixel> pixels_;

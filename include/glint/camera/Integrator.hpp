@@ -12,6 +12,8 @@
 
 namespace glint {
 
+class Camera;
+
 class Integrator {
  public:
   Integrator() = default;
@@ -28,6 +30,14 @@ class Integrator {
 
   // The shadow rays it casts, for Camera::PrepareShafts.
   virtual PixelShaft::Lights ShadowLights() const = 0;
+
+  // Light tracing (the Monte Carlo mode's --caustics light): the light paths a pass
+  // traces for each camera ray, 0 for none. Camera::RenderChunks has each chunk trace
+  // its share, `count` paths numbered by the sampler's samples 0 .. count - 1, which add
+  // what they bring to the pixels they are seen in (Camera::Splat).
+  virtual int LightPathsPerRay() const { return 0; }
+  virtual void TraceLightPaths(Camera& /*camera*/, Sampler& /*sampler*/, int /*count*/,
+                               RenderStats& /*stats*/) const {}
 };
 
 }  // namespace glint

@@ -4,7 +4,9 @@
 // the pixel's radiance is the mean of all its finite samples.
 #pragma once
 
+#include <array>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 
 #include "glint/camera/Integrator.hpp"
@@ -54,13 +56,49 @@ class Pixel {
   void SetShaft(PixelShaft shaft) { shaft_ = shaft; }
   PixelShaft Shaft() const { return shaft_; }
 
-  Colour Radiance() const { return samples_ > 0 ? sum_ / static_cast<double>(samples_) : sum_; }
+  // The camera rays' mean, plus light tracing's splats (already divided by the light
+  // paths per camera ray: LightTracer).
+  Colour Radiance() const {
+    const Colour total = sum_ + SplatColour();
+    return samples_ > 0 ? total / static_cast<double>(samples_) : total;
+  }
+
+  // Light tracing's contributions to this pixel (--caustics light), from any thread: in
+  // fixed point, units of kSplatUnit, because integer sums are the same in whatever
+  // order the threads, chunks and ranks add them (a double's are not). A splat's
+  // rounding, 2^-33 at most, is 1e-9 of a sample's typical colour. Returns false, adding
+  // nothing, for a splat that is not finite or too large for the sum (|c| >= 2^30).
+  static constexpr double kSplatUnit = 0x1.0p-32;
+  using SplatSum = std::array<std::int64_t, 3>;
+  bool AddSplat(Colour c) {
+    const double limit = 0x1.0p30;
+    if (!(std::abs(c.x) < limit && std::abs(c.y) < limit && std::abs(c.z) < limit)) return false;
+    for (int k = 0; k < 3; ++k) {
+      const auto units = static_cast<std::int64_t>(std::llround(c[k] / kSplatUnit));
+      std::atomic_ref<std::int64_t>(splat_[static_cast<std::size_t>(k)])
+          .fetch_add(units, std::memory_order_relaxed);
+    }
+    return true;
+  }
+  void AddSplats(const SplatSum& s) {
+    for (std::size_t k = 0; k < 3; ++k) splat_[k] += s[k];
+  }
+  const SplatSum& Splats() const { return splat_; }
+  void RestoreSplats(const SplatSum& s) { splat_ = s; }
+  Colour SplatColour() const {
+    return Colour(static_cast<double>(splat_[0]), static_cast<double>(splat_[1]),
+                  static_cast<double>(splat_[2])) *
+           kSplatUnit;
+  }
   std::uint64_t Samples() const { return samples_; }
   Colour Sum() const { return sum_; }
   // Complete passes added (a checkpoint's resume traces the others).
   std::uint32_t Passes() const { return passes_; }
   // Forgets the samples (not the shaft, which depends on the geometry only).
-  void Clear() { Restore(Colour(0.0), 0, 0); }
+  void Clear() {
+    Restore(Colour(0.0), 0, 0);
+    splat_ = {};
+  }
   // The state a checkpoint saved.
   void Restore(Colour sum, std::uint64_t samples, std::uint32_t passes) {
     sum_ = sum;
@@ -72,6 +110,7 @@ class Pixel {
   Colour sum_{0.0};  // sum of the finite samples' colours
   std::uint64_t samples_ = 0;
   std::uint32_t passes_ = 0;
+  SplatSum splat_{};  // light tracing's, in units of kSplatUnit
   PixelShaft shaft_;
 };
 

@@ -37,6 +37,10 @@ struct Ray {
   // already, so its emission counts 0: a diffuse ray's (at the wall it left), and the
   // mirror reflection of a diffuse ray (MirroredLight, at that wall).
   bool lightCounted = false;
+  // Monte Carlo with light tracing (LightTracer.hpp): for a ray on its way from a wall the
+  // camera sees, through mirrors, glass and Phong objects, the ratio r = p_t1 / p_s0 of
+  // light tracing's density to this path's were it to reach the light; 0 for any other.
+  double causticRatio = 0.0;
 
   vec3 At(double t) const { return start + t * direction; }
 };

@@ -15,12 +15,17 @@ struct RenderStats {
   std::uint64_t nonFiniteSamples = 0;  // NaN or Inf samples, dropped before averaging
   // Of shadowRays, those whose answer (unblocked) the pixel's shaft knew in advance.
   std::uint64_t shadowRaysByShaft = 0;
+  // Light tracing (--caustics light): the light paths' rays (from the light, and on
+  // from each surface they scatter at), and the connections to the eye that added to a
+  // pixel (their visibility tests count as shadow rays).
+  std::uint64_t lightRays = 0;
+  std::uint64_t splats = 0;
 
   // The counters in a fixed order, for a checkpoint's header or an MPI message.
-  using Counters = std::array<std::uint64_t, 7>;
+  using Counters = std::array<std::uint64_t, 9>;
   Counters ToCounters() const {
-    return {cameraRays, reflectedRays,    refractedRays,    diffuseRays,
-            shadowRays, nonFiniteSamples, shadowRaysByShaft};
+    return {cameraRays,       reflectedRays,     refractedRays, diffuseRays, shadowRays,
+            nonFiniteSamples, shadowRaysByShaft, lightRays,     splats};
   }
   static RenderStats FromCounters(const Counters& c) {
     RenderStats s;
@@ -31,6 +36,8 @@ struct RenderStats {
     s.shadowRays = c[4];
     s.nonFiniteSamples = c[5];
     s.shadowRaysByShaft = c[6];
+    s.lightRays = c[7];
+    s.splats = c[8];
     return s;
   }
 
@@ -38,7 +45,8 @@ struct RenderStats {
   // throughput counts only these.
   std::uint64_t ShadowRaysTraced() const { return shadowRays - shadowRaysByShaft; }
   std::uint64_t TracedRays() const {
-    return cameraRays + reflectedRays + refractedRays + diffuseRays + ShadowRaysTraced();
+    return cameraRays + reflectedRays + refractedRays + diffuseRays + ShadowRaysTraced() +
+           lightRays;
   }
   RenderStats& operator+=(const RenderStats& o) {
     cameraRays += o.cameraRays;
@@ -48,6 +56,8 @@ struct RenderStats {
     shadowRays += o.shadowRays;
     nonFiniteSamples += o.nonFiniteSamples;
     shadowRaysByShaft += o.shadowRaysByShaft;
+    lightRays += o.lightRays;
+    splats += o.splats;
     return *this;
   }
 };

@@ -3,37 +3,20 @@
 // Lambertian walls (terminal or diffuse), Russian roulette by throughput.
 #pragma once
 
+#include <optional>
+
 #include "glint/camera/Integrator.hpp"
+#include "glint/camera/Pinhole.hpp"
 #include "glint/scene/Hit.hpp"
 #include "glint/scene/Light.hpp"
 #include "glint/scene/Material.hpp"
 #include "glint/scene/Scene.hpp"
 #include "glint/transport/Fresnel.hpp"
+#include "glint/transport/LightTracer.hpp"
 #include "glint/transport/MirroredLight.hpp"
+#include "glint/transport/MonteCarloOptions.hpp"
 
 namespace glint {
-
-struct MonteCarloOptions {
-  enum class Walls { Terminal, Diffuse };
-  enum class Glass { Split, Choose };
-  using Fresnel = FresnelModel;
-  enum class Strategy { Mis, Light, Brdf };
-  enum class MirrorLight { Nee, Brdf };
-
-  Walls walls = Walls::Terminal;  // terminal: a wall hit spawns no child (the design)
-  Glass glass = Glass::Split;     // split: reflect and refract; choose: one, by Fresnel
-  Fresnel fresnel = Fresnel::Exact;
-  Strategy strategy = Strategy::Mis;  // at Phong object hits
-  int branches = 1;                   // children of a Phong object hit
-  // With diffuse walls, the light seen in a mirror from a Lambertian point: next-event
-  // estimation through the mirror (MirroredLight), or only the cosine-sampled rays that
-  // happen to find it.
-  MirrorLight mirrorLight = MirrorLight::Nee;
-  int maxDepth = 64;  // a safety cap; Russian roulette ends paths first
-  // Russian roulette's threshold (MonteCarloIntegrator::kRouletteThreshold); tests set a
-  // tiny one, which roulettes almost nothing, to show that roulette adds no bias.
-  double rouletteThreshold = 0.25;
-};
 
 class MonteCarloIntegrator final : public Integrator {
  public:
@@ -52,12 +35,20 @@ class MonteCarloIntegrator final : public Integrator {
   // 0.1, 0.0141 at 0.25, 0.0172 at 0.5, 0.0223 at 1, against 0.036 without it.
   static constexpr double kMirroredLightProbability = 0.1;
 
-  // Throws std::invalid_argument if the scene has no area light.
-  MonteCarloIntegrator(const Scene& scene, MonteCarloOptions options);
+  // Throws std::invalid_argument if the scene has no area light, or if caustics by
+  // light tracing are asked for without diffuse walls or without the camera they are
+  // traced toward.
+  MonteCarloIntegrator(const Scene& scene, MonteCarloOptions options,
+                       std::optional<Pinhole> camera = std::nullopt);
 
   Colour Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft, Sampler& sampler,
                RenderStats& stats) const override;
   PixelShaft::Lights ShadowLights() const override { return PixelShaft::Lights::Area; }
+  int LightPathsPerRay() const override { return tracer_ ? LightTracer::kPathsPerRay : 0; }
+  void TraceLightPaths(Camera& camera, Sampler& sampler, int count,
+                       RenderStats& stats) const override {
+    if (tracer_) tracer_->Trace(camera, sampler, count, stats);
+  }
 
   // Direct light at a surface point from one random point on the light (the sample's
   // numbers of dimension `dimension`): Le f cos(theta) / p(w), with f the BRDF for the
@@ -68,12 +59,14 @@ class MonteCarloIntegrator final : public Integrator {
   // ShadowBlocked, so that the compiler has the walls' whole estimator in one piece: as
   // separate calls they passed their vectors through the stack, even for shadow rays
   // the shaft had answered (measured: 3%). The Phong case is a call.
+  // `causticRatio`: the incident ray's Ray::causticRatio (light tracing's weight at a
+  // Phong hit).
   Colour DirectLight(const Hit& hit, vec3 d, vec3 n, double misBranches, Sample2 uv,
-                     RenderStats& stats, bool unoccluded = false) const {
+                     RenderStats& stats, bool unoccluded = false, double causticRatio = 0.0) const {
     if (hit.material->type == MaterialType::Lambertian) {
       return DirectLightLambertian(hit, n, uv.u, uv.v, stats, unoccluded);
     }
-    return DirectLightPhong(hit, d, n, misBranches, uv.u, uv.v, stats, unoccluded);
+    return DirectLightPhong(hit, d, n, misBranches, uv.u, uv.v, stats, unoccluded, causticRatio);
   }
 
   const MonteCarloOptions& Options() const { return options_; }
@@ -84,7 +77,7 @@ class MonteCarloIntegrator final : public Integrator {
                                bool unoccluded) const;
   // DirectLight at a Phong surface (with MIS against `misBranches` BRDF samples).
   Colour DirectLightPhong(const Hit& hit, vec3 d, vec3 n, double misBranches, double u, double v,
-                          RenderStats& stats, bool unoccluded) const;
+                          RenderStats& stats, bool unoccluded, double causticRatio) const;
 
   // Counts the shadow ray from surface point p (normal n, toward w) to the light point y
   // and says whether an object blocks it; one the pixel's shaft answered (`unoccluded`)
@@ -105,6 +98,7 @@ class MonteCarloIntegrator final : public Integrator {
     RayKind kind;
     bool inside;
     bool lightCounted = false;  // Ray::lightCounted
+    double causticRatio = 0.0;  // Ray::causticRatio
   };
 
   // The end of a ray that hit a terminal wall (`hit`, normal n facing the ray): its colour
@@ -123,12 +117,16 @@ class MonteCarloIntegrator final : public Integrator {
   // number.
   int Scatter(const Ray& ray, const Hit& hit, vec3 n, std::uint32_t node, Sampler& sampler,
               Candidate* out) const;
+  // With light tracing: the candidates' Ray::causticRatio, from the ray's.
+  void SetCausticRatios(const Ray& ray, const Hit& hit, vec3 n, Candidate* candidates,
+                        int count) const;
 
   const Scene& scene_;
   const Light& light_;
   MonteCarloOptions options_;
   MirroredLight mirrored_;
-  bool useMirrored_;  // diffuse walls, MirrorLight::Nee, and mirrors in the scene
+  bool useMirrored_;                   // diffuse walls, MirrorLight::Nee, and mirrors in the scene
+  std::optional<LightTracer> tracer_;  // Caustics::Light
 };
 
 // Inline: the walls' hits, most of a render, take this path.

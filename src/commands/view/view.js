@@ -169,6 +169,7 @@ function query(sets = view.settings ? view.settings.settings.set : []) {
   }
   if (mode === 'mc' && form.elements.walls.value === 'diffuse') {
     q.append('mirror-light', form.elements['mirror-light'].value);
+    q.append('caustics', form.elements.caustics.value);
   }
   for (const name of ['fresnel', 'sampler', 'seed']) q.append(name, form.elements[name].value);
   if (sets.length === 0) q.append('set', '');  // none: the scene file as it is
@@ -192,7 +193,9 @@ function updateUrl() {
   if (s.mode === 'mc') {
     parts.push(`--walls ${s.walls}`, `--strategy ${s.strategy}`, `--branches ${s.branches}`,
                `--glass ${s.glass}`);
-    if (s.walls === 'diffuse') parts.push(`--mirror-light ${s['mirror-light']}`);
+    if (s.walls === 'diffuse') {
+      parts.push(`--mirror-light ${s['mirror-light']}`, `--caustics ${s.caustics}`);
+    }
   }
   parts.push(`--fresnel ${s.fresnel}`, `--sampler ${s.sampler}`, `--seed ${s.seed}`);
   for (const set of s.set) parts.push(`--set '${set}'`);
@@ -278,8 +281,8 @@ function showSettings(body) {
   view.settings = body;
   view.generation = body.generation;
   const s = body.settings;
-  for (const name of ['mode', 'walls', 'strategy', 'branches', 'glass', 'mirror-light', 'fresnel',
-                      'sampler', 'seed']) {
+  for (const name of ['mode', 'walls', 'strategy', 'branches', 'glass', 'mirror-light',
+                      'caustics', 'fresnel', 'sampler', 'seed']) {
     form.elements[name].value = s[name];
   }
   if (rebuild) buildTunables(body.tunables);

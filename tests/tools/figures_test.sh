@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # figures_test.sh SOURCE_DIR GLINT OUT [FIGURES FLAGS...]: tools/figures --quick writes all
-# twelve figures, a well-formed CSV behind each, and the report page that shows them,
+# thirteen figures, a well-formed CSV behind each, and the report page that shows them,
 # whose captions' numbers are all in those CSVs (tests/tools/captions_check.py, which
 # also edits each caption once and sees the check fail).
 set -eu
@@ -15,9 +15,9 @@ import csv, glob, os, sys
 out = sys.argv[1]
 pngs = sorted(glob.glob(os.path.join(out, "[0-9]*-*.png")))
 csvs = sorted(glob.glob(os.path.join(out, "[0-9]*-*.csv")))
-assert len(pngs) == 12, f"{len(pngs)} figures: {pngs}"
+assert len(pngs) == 13, f"{len(pngs)} figures: {pngs}"
 figures = {os.path.basename(c).split("-")[0] for c in csvs}
-assert len(figures) == 12, f"tables of {len(figures)} figures: {csvs}"
+assert len(figures) == 13, f"tables of {len(figures)} figures: {csvs}"
 for p in pngs:
     with open(p, "rb") as f:
         assert f.read(8) == b"\x89PNG\r\n\x1a\n", p

@@ -70,15 +70,13 @@ Pinhole Camera::GeometryFor(const Wall& room, const CameraSettings& settings, in
 }
 
 Camera::Camera(const Wall& room, vec3 eye, int width, int height, double viewPlaneDistance)
-    : pinhole_(GeometryFor(room, CameraSettings{eye, viewPlaneDistance}, width, height)),
-      width_(width),
-      height_(height) {
+    : pinhole_(GeometryFor(room, CameraSettings{eye, viewPlaneDistance}, width, height)) {
   pixels_.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
 }
 
 RenderStats Camera::RenderChunks(const Integrator& integrator, const RenderOptions& options,
                                  int first, int last) {
-  const int count = width_ * height_;
+  const int count = Width() * Height();
   std::atomic<std::size_t> done{static_cast<std::size_t>(first) * kChunk};
   RenderStats total;
   const int threads = options.threads > 0 ? options.threads : MaxThreads();
@@ -100,7 +98,7 @@ RenderStats Camera::RenderChunks(const Integrator& integrator, const RenderOptio
         Sampler sampler(options.sampler, options.seed, static_cast<std::uint64_t>(i), options.pass,
                         options.firstSample, options.raysPerPixel);
         const PixelPass pass =
-            pixel.TracePass(*this, i % width_, i / width_, options.raysPerPixel, integrator,
+            pixel.TracePass(*this, i % Width(), i / Width(), options.raysPerPixel, integrator,
                             sampler, trees, stats, false, options.cancel);
         if (pass.complete) {
           pixel.Add(pass);
@@ -147,14 +145,14 @@ void Camera::PrepareShafts(const Scene& scene, PixelShaft::Lights lights, int th
   // its pixels (their shafts lie inside it); in the others each pixel works out what
   // its block did not know. (Measured: quadtrees from 8 or 16 pixels were no faster.)
   constexpr int kBlock = 4;
-  const int columns = (width_ + kBlock - 1) / kBlock;
-  const int blocks = columns * ((height_ + kBlock - 1) / kBlock);
+  const int columns = (Width() + kBlock - 1) / kBlock;
+  const int blocks = columns * ((Height() + kBlock - 1) / kBlock);
 #pragma omp parallel for schedule(dynamic, 16) num_threads(threads > 0 ? threads : MaxThreads())
   for (int b = 0; b < blocks; ++b) {
     const int x0 = (b % columns) * kBlock;
     const int y0 = (b / columns) * kBlock;
-    const int x1 = std::min(width_, x0 + kBlock);
-    const int y1 = std::min(height_, y0 + kBlock);
+    const int x1 = std::min(Width(), x0 + kBlock);
+    const int y1 = std::min(Height(), y0 + kBlock);
     const PixelShaft block = PixelShaft::Compute(scene, *this, lights, x0, y0, x1, y1, {});
     const bool clear = block.Clear(scene, lights);
     for (int y = y0; y < y1; ++y) {
@@ -172,16 +170,16 @@ void Camera::Clear() {
 }
 
 Image Camera::ToImage(int threads) const {
-  Image image(width_, height_);
+  Image image(Width(), Height());
 #pragma omp parallel for num_threads(std::max(threads, 1)) schedule(static)
-  for (int y = 0; y < height_; ++y) {
-    for (int x = 0; x < width_; ++x) image.At(x, y) = PixelAt(x, y).Radiance();
+  for (int y = 0; y < Height(); ++y) {
+    for (int x = 0; x < Width(); ++x) image.At(x, y) = PixelAt(x, y).Radiance();
   }
   for (const auto& [i, pass] : cutShort_) {
     Pixel p = pixels_[i];
     p.Add(pass);
-    image.At(static_cast<int>(i % static_cast<std::size_t>(width_)),
-             static_cast<int>(i / static_cast<std::size_t>(width_))) = p.Radiance();
+    image.At(static_cast<int>(i % static_cast<std::size_t>(Width())),
+             static_cast<int>(i / static_cast<std::size_t>(Width()))) = p.Radiance();
   }
   return image;
 }

@@ -63,8 +63,8 @@ class Camera {
   // Half the width and height of the view plane, in metres.
   double HalfWidth() const { return pinhole_.HalfWidth(); }
   double HalfHeight() const { return pinhole_.HalfHeight(); }
-  int Width() const { return width_; }
-  int Height() const { return height_; }
+  int Width() const { return pinhole_.Width(); }
+  int Height() const { return pinhole_.Height(); }
   // The geometry alone (the rays, the importance for light tracing).
   const Pinhole& Geometry() const { return pinhole_; }
   // The geometry of the camera a scene file describes, at width x height pixels, without
@@ -88,7 +88,7 @@ class Camera {
   // pieces (between which a checkpoint is saved) or spread over processes (MPI), and
   // the pixels end the same. A chunk is kChunk consecutive pixels, row by row.
   static constexpr int kChunk = 64;
-  int Chunks() const { return (width_ * height_ + kChunk - 1) / kChunk; }
+  int Chunks() const { return (Width() * Height() + kChunk - 1) / kChunk; }
   RenderStats RenderChunks(const Integrator& integrator, const RenderOptions& options, int first,
                            int last);
   // Works out, for every pixel, what its rays will and will not meet in `scene`
@@ -109,7 +109,7 @@ class Camera {
   // The stream of chunk `chunk`'s light paths in a pass: a pixel index past the image's,
   // so that no pixel shares it.
   std::uint64_t LightStream(int chunk) const {
-    return static_cast<std::uint64_t>(width_) * static_cast<std::uint64_t>(height_) +
+    return static_cast<std::uint64_t>(Width()) * static_cast<std::uint64_t>(Height()) +
            static_cast<std::uint64_t>(chunk);
   }
 
@@ -132,13 +132,11 @@ class Camera {
   void TraceChunkLightPaths(const Integrator& integrator, const RenderOptions& options, int chunk,
                             int pixels, RenderStats& stats);
   std::size_t Index(int x, int y) const {
-    return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(Width()) +
            static_cast<std::size_t>(x);
   }
 
   Pinhole pinhole_;
-  int width_;
-  int height_;
   std::vector<Pixel> pixels_;
   // One ray-tree arena per thread, kept from pass to pass so that progressive rendering
   // allocates nothing after the first pass.

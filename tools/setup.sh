@@ -19,6 +19,7 @@ packages=(
   python3-matplotlib python3-numpy  # report charts
   graphviz            # ray-tree drawings
   libcpp-httplib-dev  # glint view: the local HTTP server
+  libhwy-dev          # Google Highway: SIMD lanes, run-time dispatch
 )
 dev_packages=(
   blender             # tools/cycles-render: Cycles references (validate.cycles)
@@ -26,6 +27,7 @@ dev_packages=(
   clang libclang-rt-dev  # the scene-loader fuzzer (libFuzzer)
   clang-format clang-tidy cppcheck  # tools/lint
   chromium python3-websocket  # glint view's browser tests (DevTools protocol)
+  linux-perf valgrind # profiling: per-ray instruction and cycle counts (BENCHMARKS.md)
 )
 
 case "${1:-}" in

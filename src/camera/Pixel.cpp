@@ -1,5 +1,9 @@
 #include "glint/camera/Pixel.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cstddef>
+
 #include "glint/camera/Camera.hpp"
 
 namespace glint {
@@ -8,11 +12,15 @@ PixelPass Pixel::TracePass(const Camera& camera, int x, int y, int rays,
                            const Integrator& integrator, Sampler& sampler, RayTree& trees,
                            RenderStats& stats, bool keepTrees,
                            const std::atomic<bool>* cancel) const {
+  if (integrator.LaneWidth(shaft_) > 0) {
+    return TracePassInLanes(camera, x, y, rays, integrator, sampler, trees, stats, keepTrees,
+                            cancel);
+  }
   const double importance = 1.0 / rays;  // all rays of a pixel weigh the same
   PixelPass pass;
   trees.Clear();
   for (int i = 0; i < rays; ++i) {
-    if (cancel != nullptr && (i & 255) == 255 && cancel->load(std::memory_order_relaxed)) {
+    if (Cancelled(cancel, i)) {
       pass.complete = false;
       break;
     }
@@ -29,15 +37,62 @@ PixelPass Pixel::TracePass(const Camera& camera, int x, int y, int rays,
     ray.kind = RayKind::Camera;
     const std::uint32_t root = trees.Add(ray);
     ++stats.cameraRays;
-    const Colour c = integrator.Trace(trees, root, shaft_, sampler, stats);
-    if (!IsFinite(c)) {  // counted and dropped, never averaged in
-      ++stats.nonFiniteSamples;
-      continue;
+    AddSample(integrator.Trace(trees, root, shaft_, sampler, stats), pass, stats);
+  }
+  return pass;
+}
+
+PixelPass Pixel::TracePassInLanes(const Camera& camera, int x, int y, int rays,
+                                  const Integrator& integrator, Sampler& sampler, RayTree& trees,
+                                  RenderStats& stats, bool keepTrees,
+                                  const std::atomic<bool>* cancel) const {
+  const double importance = 1.0 / rays;
+  PixelPass pass;
+  trees.Clear();
+  RayLanes lanes;
+  std::array<std::array<double, kSobolLanesMax>, 4> numbers{};
+  const SimdTarget target = integrator.LaneTarget();
+  static_assert(RayLanes::kMax == kSobolLanesMax);
+  for (int first = 0; first < rays && pass.complete; first += RayLanes::kMax) {
+    int count = std::min(RayLanes::kMax, rays - first);
+    for (int i = first; i < first + count; ++i) {
+      if (Cancelled(cancel, i)) {
+        pass.complete = false;
+        count = i - first;
+        break;
+      }
     }
-    // Radiance() = sum_i C_i / N over the finite samples: each first ray's colour times
-    // its importance 1/N. Dropped samples (and rays a cancel cut short) do not darken it.
-    pass.sum += c;
-    ++pass.samples;
+    if (count == 0) break;
+    // The sampler's numbers of these rays (the pixel point, the first light point), as
+    // TracePass draws them ray by ray.
+    sampler.FirstGroupInLanes(first, count, target, numbers);
+    for (std::size_t lane = 0; lane < static_cast<std::size_t>(count); ++lane) {
+      lanes.px[lane] = x + numbers[0][lane];
+      lanes.py[lane] = y + numbers[1][lane];
+      lanes.lightU[lane] = numbers[2][lane];
+      lanes.lightV[lane] = numbers[3][lane];
+    }
+    integrator.TraceLanes(lanes, count, shaft_, stats);
+    // Each ray's own tree (its one node: the camera ray, ended on a terminal wall), and
+    // its colour into the sum in ray order, as TracePass adds them.
+    for (std::size_t lane = 0; lane < static_cast<std::size_t>(count); ++lane) {
+      if (!keepTrees) trees.Clear();
+      Ray ray;
+      ray.start = camera.Eye();
+      ray.direction =
+          vec3(lanes.direction[0][lane], lanes.direction[1][lane], lanes.direction[2][lane]);
+      ray.end = vec3(lanes.end[0][lane], lanes.end[1][lane], lanes.end[2][lane]);
+      ray.weight = Colour(importance);
+      ray.importance = Colour(importance);
+      ray.kind = RayKind::Camera;
+      ray.object = lanes.object;
+      ray.final = true;
+      ray.colour = Colour(lanes.colour[0][lane], lanes.colour[1][lane], lanes.colour[2][lane]);
+      trees.Add(ray);
+      ++stats.cameraRays;
+      ++stats.laneRays;
+      AddSample(ray.colour, pass, stats);
+    }
   }
   return pass;
 }

@@ -110,6 +110,13 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
   benchCommand->add_option("--sampler", bench.sampler, "Sampler: random, stratified or sobol")
       ->check(CLI::IsMember(kSamplers))
       ->capture_default_str();
+  benchCommand
+      ->add_option("--simd", bench.simd,
+                   "Monte Carlo rows for each of these SIMD targets, e.g. scalar,avx512 (see "
+                   "glint render --help)")
+      ->delimiter(',')
+      ->check(CLI::IsMember(kSimdTargets))
+      ->capture_default_str();
   benchCommand->add_option("--json", bench.json, "Also write the table as JSON to this file");
 
   ViewArgs view;

@@ -147,6 +147,14 @@ void AddRenderOptions(CLI::App* render, RenderArgs& args, bool outputs) {
                    "passes continue it; the default: lowest error at equal time)")
       ->check(CLI::IsMember(kSamplers))
       ->capture_default_str();
+  render
+      ->add_option("--simd", args.simd,
+                   "Monte Carlo with terminal walls: the instruction set of the lanes that "
+                   "trace a pixel's camera rays in lock-step: 'auto' (the widest this CPU "
+                   "runs), 'scalar' (the same code, one lane), 'sse4' (2 lanes), 'avx2' (4) or "
+                   "'avx512' (8); every one gives the same image, bit for bit")
+      ->check(CLI::IsMember(kSimdTargets))
+      ->capture_default_str();
   render->add_flag("-q,--quiet", args.quiet, "No progress bar and no summary line");
 }
 

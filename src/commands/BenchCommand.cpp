@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "glint/core/SimdTarget.hpp"
 #include "glint/image/ImageIO.hpp"
 #include "glint/image/SlopeFit.hpp"
 #include "job/Cluster.hpp"
@@ -20,6 +21,7 @@ namespace {
 
 struct Row {
   std::string mode;
+  std::string simd;  // the lanes' target as it ran ("-" in Whitted mode: no lanes)
   int spp = 0;
   int threads = 0;
   double seconds = 0.0;  // the median of the runs
@@ -39,8 +41,10 @@ struct Case {
 };
 
 // The render a row measures: the bench's scene, size and sampler in one mode.
-RenderArgs RowArgs(const BenchArgs& args, const std::string& mode, int threads) {
+RenderArgs RowArgs(const BenchArgs& args, const std::string& mode, int threads,
+                   const std::string& simd = "auto") {
   RenderArgs r;
+  r.simd = simd;
   r.scene = args.scene;
   r.mode = mode;
   r.size = args.size;
@@ -50,8 +54,9 @@ RenderArgs RowArgs(const BenchArgs& args, const std::string& mode, int threads) 
   return r;
 }
 
-Case Prepared(const BenchArgs& args, const std::string& mode, int threads) {
-  const RenderArgs r = RowArgs(args, mode, threads);
+Case Prepared(const BenchArgs& args, const std::string& mode, int threads,
+              const std::string& simd = "auto") {
+  const RenderArgs r = RowArgs(args, mode, threads, simd);
   Case c{PrepareTimedRender(Prepare(r, false), r), {}, {}, {}};
   c.render.options.raysPerPixel = c.render.setup->raysPerPass;
   return c;
@@ -69,8 +74,18 @@ void Run(Case& c) {
   c.cpus.push_back(t.cpu);
 }
 
-Row RowOf(const Case& c, const std::string& mode, int threads) {
+// The SIMD targets a mode's rows run: the list for Monte Carlo, none for Whitted.
+std::vector<std::string> SimdOf(const BenchArgs& args, const std::string& mode) {
+  return mode == "mc" ? args.simd : std::vector<std::string>{"-"};
+}
+
+Row RowOf(const Case& c, const std::string& mode, const std::string& simd, int threads) {
+  const std::string ran =
+      simd == "-"
+          ? simd
+          : SimdTargetName(ResolveSimdTarget(ParseSimdTarget(simd).value_or(SimdTarget::Auto)));
   Row row{mode,
+          ran,
           c.render.setup->raysPerPass,
           threads,
           MedianOf(c.walls),
@@ -85,7 +100,7 @@ Row RowOf(const Case& c, const std::string& mode, int threads) {
 Row Measure(const BenchArgs& args, const std::string& mode, int threads) {
   Case c = Prepared(args, mode, threads);
   for (int i = 0; i < args.repeat; ++i) Run(c);
-  return RowOf(c, mode, threads);
+  return RowOf(c, mode, "-", threads);
 }
 
 std::string ToJson(const BenchArgs& args, const std::vector<Row>& rows, double otherCores) {
@@ -98,6 +113,7 @@ std::string ToJson(const BenchArgs& args, const std::vector<Row>& rows, double o
   for (const Row& row : rows) {
     const double rays = static_cast<double>(row.stats.TracedRays());
     j["runs"].push_back({{"mode", row.mode},
+                         {"simd", row.simd},
                          {"spp", row.spp},
                          {"threads", row.threads},
                          {"seconds", row.seconds},
@@ -185,7 +201,10 @@ int RunBench(const BenchArgs& args, const Cluster& cluster) {
     RenderArgs check;
     check.scene = args.scene;
     check.size = args.size;
-    Prepare(check, false);
+    for (const std::string& simd : args.simd) {  // and a SIMD target this CPU lacks
+      check.simd = simd;
+      Prepare(check, false);
+    }
   }
   const bool square = args.size.find_first_of("xX") == std::string::npos;
   std::printf(
@@ -196,31 +215,38 @@ int RunBench(const BenchArgs& args, const Cluster& cluster) {
       args.repeat, args.repeat == 1 ? "" : "s", args.sampler.c_str());
   std::vector<Case> cases;
   for (const std::string& mode : args.modes) {
-    for (const int threads : args.threads) cases.push_back(Prepared(args, mode, threads));
+    for (const std::string& simd : SimdOf(args, mode)) {
+      for (const int threads : args.threads) {
+        cases.push_back(Prepared(args, mode, threads, simd == "-" ? "auto" : simd));
+      }
+    }
   }
   const RunClock clock;
   for (int i = 0; i < args.repeat; ++i) {
     for (Case& c : cases) Run(c);
   }
   const double others = clock.Elapsed().OtherCores();
-  std::printf("%-8s %5s %7s %9s %15s %11s %9s %14s %8s %11s\n", "mode", "spp", "threads", "seconds",
-              "(min - max)", "Mpaths/s", "Mrays/s", "Mrays/s/thread", "speedup", "shaft M/s");
+  std::printf("%-8s %-7s %5s %7s %9s %15s %11s %9s %14s %8s %11s\n", "mode", "simd", "spp",
+              "threads", "seconds", "(min - max)", "Mpaths/s", "Mrays/s", "Mrays/s/thread",
+              "speedup", "shaft M/s");
   std::vector<Row> rows;
   std::size_t next = 0;
   for (const std::string& mode : args.modes) {
-    double first = 0.0;
-    for (const int threads : args.threads) {
-      const Row row = RowOf(cases[next++], mode, threads);
-      if (first == 0.0) first = row.seconds;  // speedups are relative to the first count
-      const double rays = static_cast<double>(row.stats.TracedRays()) / row.seconds / 1e6;
-      char spread[32];
-      std::snprintf(spread, sizeof spread, "(%.3f - %.3f)", row.fastest, row.slowest);
-      std::printf("%-8s %5d %7d %9.3f %15s %11.2f %9.2f %14.2f %8.2f %11.2f\n", mode.c_str(),
-                  row.spp, threads, row.seconds, spread,
-                  static_cast<double>(row.stats.cameraRays) / row.seconds / 1e6, rays,
-                  rays / threads, first / row.seconds,
-                  static_cast<double>(row.stats.shadowRaysByShaft) / row.seconds / 1e6);
-      rows.push_back(row);
+    double first = 0.0;  // speedups are relative to the mode's first row
+    for (const std::string& simd : SimdOf(args, mode)) {
+      for (const int threads : args.threads) {
+        const Row row = RowOf(cases[next++], mode, simd, threads);
+        if (first == 0.0) first = row.seconds;
+        const double rays = static_cast<double>(row.stats.TracedRays()) / row.seconds / 1e6;
+        char spread[32];
+        std::snprintf(spread, sizeof spread, "(%.3f - %.3f)", row.fastest, row.slowest);
+        std::printf("%-8s %-7s %5d %7d %9.3f %15s %11.2f %9.2f %14.2f %8.2f %11.2f\n", mode.c_str(),
+                    row.simd.c_str(), row.spp, threads, row.seconds, spread,
+                    static_cast<double>(row.stats.cameraRays) / row.seconds / 1e6, rays,
+                    rays / threads, first / row.seconds,
+                    static_cast<double>(row.stats.shadowRaysByShaft) / row.seconds / 1e6);
+        rows.push_back(row);
+      }
     }
   }
   std::printf("other processes took %.0f%% of a core during the runs%s\n", 100.0 * others,

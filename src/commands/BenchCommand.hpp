@@ -19,6 +19,9 @@ struct BenchArgs {
   int repeat = 3;
   std::vector<std::string> modes{"mc", "whitted"};
   std::string sampler = "sobol";
+  // Monte Carlo rows for each SIMD target (--simd auto|scalar|sse4|avx2|avx512, a list):
+  // the targets' rows take turns like the others.
+  std::vector<std::string> simd{"auto"};
   std::string json;  // optional: the table as JSON
 };
 

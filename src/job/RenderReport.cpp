@@ -4,10 +4,18 @@
 
 #include <cstdio>
 
+#include "glint/core/SimdTarget.hpp"
 #include "job/Cluster.hpp"
 #include "nlohmann/json.hpp"
 
 namespace glint {
+
+namespace {
+// The lanes' instruction set (--simd) as it ran: auto resolved to this CPU's widest.
+SimdTarget SimdThatRan(const RenderArgs& args) {
+  return ResolveSimdTarget(ParseSimdTarget(args.simd).value_or(SimdTarget::Auto));
+}
+}  // namespace
 
 double PeakResidentMiB() {
   rusage usage{};
@@ -58,6 +66,11 @@ std::string StatsJson(const RenderArgs& args, const RenderSetup& s, const Camera
                {"fresnel", args.fresnel},   {"strategy", args.strategy},
                {"branches", args.branches}, {"mirror_light", args.mirrorLight},
                {"caustics", args.caustics}};
+    // The camera rays the SIMD lanes traced (the others, one by one): the same image.
+    const SimdTarget simd = SimdThatRan(args);
+    j["simd"] = {{"target", SimdTargetName(simd)},
+                 {"lanes", SimdLanes(simd)},
+                 {"camera_rays_in_lanes", st.laneRays}};
   }
   j["view_plane_distance"] = camera.ViewPlaneDistance();
   return j.dump(2) + "\n";
@@ -80,6 +93,12 @@ void PrintSummary(const RenderArgs& args, const RenderSetup& s, const RenderResu
                static_cast<double>(st.ShadowRaysTraced()),
                traced / (r.seconds > 0.0 ? r.seconds : 1e-9) / 1e6,
                static_cast<double>(st.shadowRaysByShaft));
+  if (args.mode == "mc" && st.cameraRays > 0) {
+    const SimdTarget simd = SimdThatRan(args);
+    std::fprintf(stderr, "; SIMD %s (%d lane%s) for %.0f%% of the camera rays",
+                 SimdTargetName(simd), SimdLanes(simd), SimdLanes(simd) == 1 ? "" : "s",
+                 100.0 * static_cast<double>(st.laneRays) / static_cast<double>(st.cameraRays));
+  }
   if (st.lightRays > 0) {
     std::fprintf(stderr, "; light tracing %.3g of the rays, %.3g joined to the eye",
                  static_cast<double>(st.lightRays), static_cast<double>(st.splats));

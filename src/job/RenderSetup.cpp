@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 
 #include "glint/image/ImageIO.hpp"
 #include "glint/scene/SceneLoader.hpp"
@@ -130,6 +131,18 @@ RenderSetup Prepare(const RenderArgs& args, bool checkOutputs) {
       throw InputError(name + ": means nothing with --walls " + args.walls +
                        " (a caustic lights a wall only with --walls diffuse)");
     }
+    if (args.walls == "diffuse" && name == std::string("--simd")) {
+      throw InputError(name +
+                       ": means nothing with --walls diffuse (the SIMD lanes trace the "
+                       "camera rays that end on terminal walls, so far)");
+    }
+  }
+  const std::optional<SimdTarget> simd = ParseSimdTarget(args.simd);
+  if (!simd)
+    throw InputError("--simd " + args.simd + ": expected auto, scalar, sse4, avx2 or avx512");
+  if (!SimdTargetSupported(*simd)) {
+    throw InputError("--simd " + args.simd + ": this CPU does not run it; it runs " +
+                     SupportedSimdTargetNames());
   }
   RenderSetup s;
   s.scene = LoadScene(args.scene, args.overrides);
@@ -183,6 +196,7 @@ MonteCarloOptions McOptions(const RenderArgs& args, const ModeSettings& mode) {
   o.mirrorLight = args.mirrorLight == "brdf" ? O::MirrorLight::Brdf : O::MirrorLight::Nee;
   o.caustics = args.caustics == "light" ? O::Caustics::Light : O::Caustics::Off;
   o.maxDepth = mode.maxDepth;
+  o.simd = ParseSimdTarget(args.simd).value_or(SimdTarget::Auto);
   return o;
 }
 

@@ -36,6 +36,7 @@ struct RenderArgs {
   std::string mirrorLight = "nee";
   std::string caustics = "off";
   std::string sampler = "sobol";  // the equal-time study's winner (BENCHMARKS.md)
+  std::string simd = "auto";      // the lanes' instruction set (SimdTarget)
   // The Monte Carlo switches given on the command line (--walls, ...): with --mode
   // whitted they mean nothing, and Prepare refuses them.
   std::vector<std::string> monteCarloSwitches;
@@ -58,10 +59,11 @@ inline const std::vector<std::string> kStrategies = {"mis", "light", "brdf"};
 inline const std::vector<std::string> kMirrorLightModes = {"nee", "brdf"};
 inline const std::vector<std::string> kCausticsModes = {"off", "light"};
 inline const std::vector<std::string> kSamplers = {"random", "stratified", "sobol"};
+inline const std::vector<std::string> kSimdTargets = {"auto", "scalar", "sse4", "avx2", "avx512"};
 
 // The switches that mean something in Monte Carlo mode only.
-inline constexpr const char* kMonteCarloSwitches[] = {"--walls",    "--branches",     "--glass",
-                                                      "--strategy", "--mirror-light", "--caustics"};
+inline constexpr const char* kMonteCarloSwitches[] = {
+    "--walls", "--branches", "--glass", "--strategy", "--mirror-light", "--caustics", "--simd"};
 
 // The --sampler of the command line (checked by the parser).
 SamplerKind SamplerFromArgs(const RenderArgs& args);

@@ -35,7 +35,6 @@ bool Wall::Intersect(vec3 origin, vec3 direction, double tMax, Hit& hit) const {
 
 void Wall::FillHit(vec3 origin, vec3 direction, double t, int side, Hit& hit) const {
   // The side's plane: its axis and whether it is the box's min or max face.
-  static constexpr std::array<int, kSides> kFaceOfSide = {0, 3, 1, 2, 4};
   hit.t = t;
   hit.point = PointOnSlabFace(origin, direction, t, kFaceOfSide[side], position_, maxCorner_);
   hit.normal = faces_[side].Normal();

@@ -38,6 +38,27 @@ MonteCarloIntegrator::MonteCarloIntegrator(const Scene& scene, MonteCarloOptions
     if (!camera) throw std::invalid_argument("caustics by light tracing need the camera");
     tracer_.emplace(scene_, light_, options_, *camera, !useMirrored_);
   }
+  if (options_.walls == MonteCarloOptions::Walls::Terminal && camera) {
+    lanes_.emplace(scene_.wall, light_, *camera, options_.simd);
+  }
+}
+
+void MonteCarloIntegrator::TraceLanes(RayLanes& lanes, int count, const PixelShaft& shaft,
+                                      RenderStats& stats) const {
+  lanes_->Trace(lanes, count, shaft.side);
+  lanes.object = scene_.wall.ObjectOf(shaft.side);
+  // The shadow rays, per lane: counted, and tested where the shaft did not answer them
+  // (ShadowBlocked, with the scalar code's inputs: the same bits).
+  const vec3 normal = scene_.wall.Face(shaft.side).Normal();
+  for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
+    if (lanes.lit[i] == 0.0) continue;
+    const vec3 d(lanes.direction[0][i], lanes.direction[1][i], lanes.direction[2][i]);
+    const vec3 p(lanes.end[0][i], lanes.end[1][i], lanes.end[2][i]);
+    const vec3 y(lanes.lightPoint[0][i], lanes.lightPoint[1][i], lanes.lightPoint[2][i]);
+    if (ShadowBlocked(p, FacingNormal(d, normal), y - p, y, shaft.areaLightVisible, stats)) {
+      for (auto& c : lanes.colour) c[i] = 0.0;
+    }
+  }
 }
 
 Colour MonteCarloIntegrator::Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,

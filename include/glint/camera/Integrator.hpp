@@ -5,9 +5,11 @@
 #include <cstdint>
 
 #include "glint/camera/PixelShaft.hpp"
+#include "glint/camera/RayLanes.hpp"
 #include "glint/camera/RayTree.hpp"
 #include "glint/camera/RenderStats.hpp"
 #include "glint/core/Math.hpp"
+#include "glint/core/SimdTarget.hpp"
 #include "glint/sampling/Sampler.hpp"
 
 namespace glint {
@@ -27,6 +29,16 @@ class Integrator {
   // take their numbers from `sampler`, in the sample the pixel has started.
   virtual Colour Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft, Sampler& sampler,
                        RenderStats& stats) const = 0;
+
+  // Lock-step lanes (RayLanes): 0 if the camera rays of a pixel with `shaft` are traced
+  // one by one (Trace), else the number traced at once (the SIMD target's width, 1 for
+  // its scalar form). TraceLanes then traces lanes [0, count) as Trace would each ray,
+  // to the bit.
+  virtual int LaneWidth(const PixelShaft& /*shaft*/) const { return 0; }
+  // The instruction set of those lanes (resolved: never Auto); the sampler's lanes use it.
+  virtual SimdTarget LaneTarget() const { return SimdTarget::Scalar; }
+  virtual void TraceLanes(RayLanes& /*lanes*/, int /*count*/, const PixelShaft& /*shaft*/,
+                          RenderStats& /*stats*/) const {}
 
   // The shadow rays it casts, for Camera::PrepareShafts.
   virtual PixelShaft::Lights ShadowLights() const = 0;

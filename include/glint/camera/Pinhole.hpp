@@ -33,6 +33,9 @@ class Pinhole {
   double Distance() const { return distance_; }
   double HalfWidth() const { return halfWidth_; }
   double HalfHeight() const { return halfHeight_; }
+  vec3 ViewPlaneCentre() const { return planeCentre_; }
+  double PixelWidth() const { return pixelWidth_; }  // of the view plane, in metres
+  double PixelHeight() const { return pixelHeight_; }
   int Width() const { return width_; }
   int Height() const { return height_; }
   std::size_t Pixels() const {

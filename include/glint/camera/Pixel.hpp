@@ -107,6 +107,28 @@ class Pixel {
   }
 
  private:
+  // TracePass for a pixel whose rays the integrator traces in lock-step lanes
+  // (Integrator::LaneWidth): the same samples, the same trees, the same bits.
+  PixelPass TracePassInLanes(const Camera& camera, int x, int y, int rays,
+                             const Integrator& integrator, Sampler& sampler, RayTree& trees,
+                             RenderStats& stats, bool keepTrees,
+                             const std::atomic<bool>* cancel) const;
+  // Whether the pass stops before ray i: a cancel, looked at every 256 rays.
+  static bool Cancelled(const std::atomic<bool>* cancel, int i) {
+    return cancel != nullptr && (i & 255) == 255 && cancel->load(std::memory_order_relaxed);
+  }
+  // Radiance() = sum_i C_i / N over the finite samples: each first ray's colour times
+  // its importance 1/N. A NaN or Inf sample is counted and dropped, never averaged in;
+  // dropped samples (and rays a cancel cut short) do not darken it.
+  static void AddSample(Colour c, PixelPass& pass, RenderStats& stats) {
+    if (!IsFinite(c)) {
+      ++stats.nonFiniteSamples;
+      return;
+    }
+    pass.sum += c;
+    ++pass.samples;
+  }
+
   Colour sum_{0.0};  // sum of the finite samples' colours
   std::uint64_t samples_ = 0;
   std::uint32_t passes_ = 0;

@@ -20,12 +20,14 @@ struct RenderStats {
   // pixel (their visibility tests count as shadow rays).
   std::uint64_t lightRays = 0;
   std::uint64_t splats = 0;
+  // Of cameraRays, those traced in lock-step SIMD lanes (Integrator::TraceLanes).
+  std::uint64_t laneRays = 0;
 
   // The counters in a fixed order, for a checkpoint's header or an MPI message.
-  using Counters = std::array<std::uint64_t, 9>;
+  using Counters = std::array<std::uint64_t, 10>;
   Counters ToCounters() const {
     return {cameraRays,       reflectedRays,     refractedRays, diffuseRays, shadowRays,
-            nonFiniteSamples, shadowRaysByShaft, lightRays,     splats};
+            nonFiniteSamples, shadowRaysByShaft, lightRays,     splats,      laneRays};
   }
   static RenderStats FromCounters(const Counters& c) {
     RenderStats s;
@@ -38,6 +40,7 @@ struct RenderStats {
     s.shadowRaysByShaft = c[6];
     s.lightRays = c[7];
     s.splats = c[8];
+    s.laneRays = c[9];
     return s;
   }
 
@@ -58,6 +61,7 @@ struct RenderStats {
     shadowRaysByShaft += o.shadowRaysByShaft;
     lightRays += o.lightRays;
     splats += o.splats;
+    laneRays += o.laneRays;
     return *this;
   }
 };

@@ -61,6 +61,11 @@ class Sobol4 {
     return t[0][reversedIndex & 0xffU] ^ t[1][(reversedIndex >> 8U) & 0xffU] ^
            t[2][(reversedIndex >> 16U) & 0xffU] ^ t[3][reversedIndex >> 24U];
   }
+  // Dimension d's table for byte k of a reversed index (SobolLanes gathers from it):
+  // entry b is what that byte, equal to b, xors into the point.
+  static const std::uint32_t* TableOf(int d, int k) {
+    return Tables()[static_cast<std::size_t>(d)][static_cast<std::size_t>(k)].data();
+  }
   // The point of `index` in dimension d, the plain way (a loop over the index's bits).
   static std::uint32_t Sample(std::uint32_t index, int d) {
     const std::array<std::uint32_t, 32> v = Directions(d);

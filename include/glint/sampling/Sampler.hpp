@@ -16,8 +16,10 @@
 #include <optional>
 #include <string_view>
 
+#include "glint/core/SimdTarget.hpp"
 #include "glint/sampling/LowDiscrepancy.hpp"
 #include "glint/sampling/Rng.hpp"
+#include "glint/sampling/SobolLanes.hpp"
 
 namespace glint {
 
@@ -93,6 +95,14 @@ class Sampler {
       paddingReady_ = false;
     }
   }
+
+  // The numbers of the first two dimension pairs (SampleDimension::kPixel and
+  // Light(0)) of samples first, first + 1, ... (count <= kSobolLanesMax): out[0..3][j]
+  // are sample first + j's kPixel u, v and Light(0) u, v, what StartSample(first + j) and
+  // two Get2D calls give. Sobol's come from SIMD lanes on `target` (resolved, supported);
+  // the others' one by one, in the same order. Leaves the sampler as those calls would.
+  void FirstGroupInLanes(int first, int count, SimdTarget target,
+                         std::array<std::array<double, kSobolLanesMax>, 4>& out);
 
   double Get1D(std::uint32_t dimension) {
     if (kind_ == SamplerKind::Sobol) {

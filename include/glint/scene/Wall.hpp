@@ -33,6 +33,14 @@ class Wall {
   double DistanceThrough(vec3 origin, vec3 direction, int side) const;
 
   vec3 Position() const { return position_; }
+  vec3 MaxCorner() const { return maxCorner_; }
+  // The coordinate, along AxisOf(side), of wall `side`'s plane.
+  double PlaneOf(int side) const {
+    const int face = kFaceOfSide[static_cast<std::size_t>(side)];
+    return face % 2 == 0 ? position_[face / 2] : maxCorner_[face / 2];
+  }
+  // The scene's object number of wall `side`.
+  int ObjectOf(int side) const { return firstObject_ + side; }
   double Size() const { return size_; }
   vec3 Centre() const { return position_ + vec3(0.5 * size_); }
   // The first half of the camera's set-up rule: `eye` lies on the axis through the
@@ -51,6 +59,8 @@ class Wall {
  private:
   // The wall side on each face of the box (IntersectSlabs' order); the front is open.
   static constexpr std::array<int, 6> kSideOfFace = {kLeft, kRight, kFloor, kCeiling, kBack, -1};
+  // Its inverse: the face (IntersectSlabs' order) of each side.
+  static constexpr std::array<int, kSides> kFaceOfSide = {0, 3, 1, 2, 4};
 
   // Nearer's two cases for rays that pass through the room's inside.
   bool Exit(vec3 o, vec3 d, double& t, int& side) const;

@@ -15,6 +15,7 @@
 #include "glint/transport/LightTracer.hpp"
 #include "glint/transport/MirroredLight.hpp"
 #include "glint/transport/MonteCarloOptions.hpp"
+#include "glint/transport/TerminalWallLanes.hpp"
 
 namespace glint {
 
@@ -44,6 +45,13 @@ class MonteCarloIntegrator final : public Integrator {
   Colour Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft, Sampler& sampler,
                RenderStats& stats) const override;
   PixelShaft::Lights ShadowLights() const override { return PixelShaft::Lights::Area; }
+  // With terminal walls (and the camera given), a roomOnly pixel's rays run in lanes.
+  int LaneWidth(const PixelShaft& shaft) const override {
+    return lanes_ && shaft.roomOnly ? lanes_->Width() : 0;
+  }
+  SimdTarget LaneTarget() const override { return lanes_ ? lanes_->Target() : SimdTarget::Scalar; }
+  void TraceLanes(RayLanes& lanes, int count, const PixelShaft& shaft,
+                  RenderStats& stats) const override;
   int LightPathsPerRay() const override { return tracer_ ? LightTracer::kPathsPerRay : 0; }
   void TraceLightPaths(Camera& camera, Sampler& sampler, int count,
                        RenderStats& stats) const override {
@@ -127,6 +135,7 @@ class MonteCarloIntegrator final : public Integrator {
   MirroredLight mirrored_;
   bool useMirrored_;                   // diffuse walls, MirrorLight::Nee, and mirrors in the scene
   std::optional<LightTracer> tracer_;  // Caustics::Light
+  std::optional<TerminalWallLanes> lanes_;  // Walls::Terminal, with the camera
 };
 
 // Inline: the walls' hits, most of a render, take this path.

@@ -1,8 +1,10 @@
 // The Monte Carlo mode's switches (the command line's --walls, --glass, --fresnel,
-// --strategy, --branches, --mirror-light, --caustics), as MonteCarloIntegrator and its
+// --strategy, --branches, --mirror-light, --caustics,
+// --simd), as MonteCarloIntegrator and its
 // LightTracer read them.
 #pragma once
 
+#include "glint/core/SimdTarget.hpp"
 #include "glint/transport/Fresnel.hpp"
 
 namespace glint {
@@ -32,6 +34,9 @@ struct MonteCarloOptions {
   // Russian roulette's threshold (MonteCarloIntegrator::kRouletteThreshold); tests set a
   // tiny one, which roulettes almost nothing, to show that roulette adds no bias.
   double rouletteThreshold = 0.25;
+  // The instruction set of the lock-step lanes (--simd; TerminalWallLanes): any gives
+  // the same image.
+  SimdTarget simd = SimdTarget::Auto;
 };
 
 }  // namespace glint

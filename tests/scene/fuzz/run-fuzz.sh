@@ -14,8 +14,8 @@ if ! command -v clang++ >/dev/null; then
 fi
 mkdir -p "$work/obj" "$work/corpus" "$work/artifacts"
 flags=(-std=c++20 -O1 -g -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined
-       -DGLM_FORCE_XYZW_ONLY -I"$src/include" -isystem /usr/include/stb -w
-       $(pkg-config --cflags OpenEXR))
+       -DGLM_FORCE_XYZW_ONLY -I"$src/include" -I"$src" -isystem /usr/include/stb -w
+       -ffp-contract=off $(pkg-config --cflags OpenEXR libhwy))
 objects=()
 pids=()
 for s in "${sources[@]}"; do
@@ -33,7 +33,7 @@ for pid in "${pids[@]}"; do
   wait "$pid" || { echo "fuzz: a compile failed"; exit 1; }
 done
 clang++ "${flags[@]}" -fsanitize=fuzzer "$src/tests/scene/fuzz/scene_fuzzer.cpp" "${objects[@]}" \
-  $(pkg-config --libs OpenEXR) -o "$work/scene_fuzzer"
+  $(pkg-config --libs OpenEXR libhwy) -o "$work/scene_fuzzer"
 # The seed corpus must be there: a fuzzer started on nothing would find nothing.
 cp "$src"/tests/scene/fuzz/corpus/* "$src"/tests/scene/fuzz/regressions/* "$work/corpus/"
 cd "$work"

@@ -1,0 +1,112 @@
+// Highway compiles this file once per x86-64 target (foreach_target.h); the kernel below
+// is the same source for each, chosen at run time by SobolFirstGroupLanes.
+#include "glint/sampling/SobolLanes.hpp"
+
+#include <cstddef>
+
+#include "glint/sampling/LowDiscrepancy.hpp"
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "src/sampling/SobolLanes.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+HWY_BEFORE_NAMESPACE();
+namespace glint {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// ReverseBits32, lane by lane.
+template <class D, class V>
+V ReverseBits(D d, V x) {
+  const auto k1 = hn::Set(d, 0x55555555U);
+  const auto k2 = hn::Set(d, 0x33333333U);
+  const auto k4 = hn::Set(d, 0x0f0f0f0fU);
+  x = hn::Or(hn::And(hn::ShiftRight<1>(x), k1), hn::ShiftLeft<1>(hn::And(x, k1)));
+  x = hn::Or(hn::And(hn::ShiftRight<2>(x), k2), hn::ShiftLeft<2>(hn::And(x, k2)));
+  x = hn::Or(hn::And(hn::ShiftRight<4>(x), k4), hn::ShiftLeft<4>(hn::And(x, k4)));
+  // __builtin_bswap32
+  return hn::Or(hn::Or(hn::ShiftRight<24>(x), hn::And(hn::ShiftRight<8>(x), hn::Set(d, 0xff00U))),
+                hn::Or(hn::And(hn::ShiftLeft<8>(x), hn::Set(d, 0xff0000U)), hn::ShiftLeft<24>(x)));
+}
+
+// OwenScrambleReversed, lane by lane.
+template <class D, class V>
+V OwenScramble(D d, V v, std::uint32_t seed) {
+  v = hn::Xor(v, hn::Mul(v, hn::Set(d, 0x3d20adeaU)));
+  v = hn::Add(v, hn::Set(d, seed));
+  v = hn::Mul(v, hn::Set(d, (seed >> 16U) | 1U));
+  v = hn::Xor(v, hn::Mul(v, hn::Set(d, 0x05526c56U)));
+  v = hn::Xor(v, hn::Mul(v, hn::Set(d, 0x53a22864U)));
+  return v;
+}
+
+template <class D>
+void FirstGroupIn(D d, const SobolLaneSeeds& s, std::uint32_t firstIndex, int count,
+                  SobolLaneValues& out) {
+  const hn::RebindToSigned<D> di;
+  const std::size_t w = hn::Lanes(d);
+  const auto byte = hn::Set(d, 0xffU);
+  for (std::size_t i = 0; i < static_cast<std::size_t>(count); i += w) {
+    const auto index =
+        hn::Add(hn::Set(d, firstIndex + static_cast<std::uint32_t>(i)), hn::Iota(d, 0));
+    const auto shuffled = OwenScramble(d, ReverseBits(d, index), s.shuffle);
+    // Sobol4::SampleReversed: the xor of one table entry per byte of the index.
+    const auto b0 = hn::BitCast(di, hn::And(shuffled, byte));
+    const auto b1 = hn::BitCast(di, hn::And(hn::ShiftRight<8>(shuffled), byte));
+    const auto b2 = hn::BitCast(di, hn::And(hn::ShiftRight<16>(shuffled), byte));
+    const auto b3 = hn::BitCast(di, hn::ShiftRight<24>(shuffled));
+    for (std::size_t c = 0; c < 4; ++c) {
+      const int dim = static_cast<int>(c);
+      const auto x = hn::Xor(hn::Xor(hn::GatherIndex(d, Sobol4::TableOf(dim, 0), b0),
+                                     hn::GatherIndex(d, Sobol4::TableOf(dim, 1), b1)),
+                             hn::Xor(hn::GatherIndex(d, Sobol4::TableOf(dim, 2), b2),
+                                     hn::GatherIndex(d, Sobol4::TableOf(dim, 3), b3)));
+      hn::StoreU(ReverseBits(d, OwenScramble(d, x, s.component[c])), d, out[c].data() + i);
+    }
+  }
+}
+
+// Eight 32-bit lanes where the target has them (AVX2, AVX-512 at half width), four on
+// SSE4, and one: the scalar path, the same code.
+void FirstGroupLanes(const SobolLaneSeeds& s, std::uint32_t firstIndex, int count,
+                     SobolLaneValues& out) {
+  FirstGroupIn(hn::CappedTag<std::uint32_t, kSobolLanesMax>(), s, firstIndex, count, out);
+}
+void FirstGroupLane(const SobolLaneSeeds& s, std::uint32_t firstIndex, int count,
+                    SobolLaneValues& out) {
+  FirstGroupIn(hn::CappedTag<std::uint32_t, 1>(), s, firstIndex, count, out);
+}
+
+// NOLINTNEXTLINE(google-readability-namespace-comments)
+}  // namespace HWY_NAMESPACE
+}  // namespace glint
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace glint {
+
+void SobolFirstGroupLanes(SimdTarget target, const SobolLaneSeeds& seeds, std::uint32_t firstIndex,
+                          int count, SobolLaneValues& out) {
+  using Kernel = void (*)(const SobolLaneSeeds&, std::uint32_t, int, SobolLaneValues&);
+  Kernel kernel = nullptr;
+  switch (target) {
+    case SimdTarget::Sse4:
+      kernel = HWY_CHOOSE_SSE4(FirstGroupLanes);
+      break;
+    case SimdTarget::Avx2:
+      kernel = HWY_CHOOSE_AVX2(FirstGroupLanes);
+      break;
+    case SimdTarget::Avx512:
+      kernel = HWY_CHOOSE_AVX3(FirstGroupLanes);
+      break;
+    case SimdTarget::Auto:
+    case SimdTarget::Scalar:
+      break;
+  }
+  if (kernel == nullptr) kernel = &HWY_STATIC_DISPATCH(FirstGroupLane);
+  kernel(seeds, firstIndex, count, out);
+}
+
+}  // namespace glint
+#endif  // HWY_ONCE

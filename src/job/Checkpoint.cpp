@@ -1,9 +1,11 @@
 #include "job/Checkpoint.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <vector>
 
 #include "glint/core/JsonReader.hpp"
 #include "glint/image/ImageIO.hpp"
@@ -123,7 +125,18 @@ CheckpointProgress LoadCheckpoint(const std::string& path, const nlohmann::json&
   progress.spp = header.at("spp");
   progress.currentRays = header.at("current_rays");
   progress.seconds = header.at("seconds");
-  progress.stats = RenderStats::FromCounters(header.at("stats").get<RenderStats::Counters>());
+  // A checkpoint of the build before the SIMD lanes holds 9 counters: laneRays, the
+  // 10th, was 0 then (no lanes).
+  std::vector<std::uint64_t> stats = header.at("stats").get<std::vector<std::uint64_t>>();
+  RenderStats::Counters counters{};
+  if (stats.size() + 1 == counters.size()) stats.push_back(0);
+  if (stats.size() != counters.size()) {
+    throw InputError("--resume " + path + ": field stats: expected " +
+                     std::to_string(counters.size()) + " counters, found " +
+                     std::to_string(stats.size()));
+  }
+  std::copy(stats.begin(), stats.end(), counters.begin());
+  progress.stats = RenderStats::FromCounters(counters);
   return progress;
 }
 

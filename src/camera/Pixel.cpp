@@ -65,7 +65,7 @@ PixelPass Pixel::TracePassInLanes(const Camera& camera, int x, int y, int rays,
     if (count == 0) break;
     // The sampler's numbers of these rays (the pixel point, the first light point), as
     // TracePass draws them ray by ray.
-    sampler.FirstGroupInLanes(first, count, target, numbers);
+    sampler.FirstGroupInLanes(first, count, target, numbers, integrator.LanesTakeLightPoint());
     for (std::size_t lane = 0; lane < static_cast<std::size_t>(count); ++lane) {
       lanes.px[lane] = x + numbers[0][lane];
       lanes.py[lane] = y + numbers[1][lane];

@@ -112,7 +112,7 @@ int RunCli(int argc, char** argv, const Cluster& cluster) {
       ->capture_default_str();
   benchCommand
       ->add_option("--simd", bench.simd,
-                   "Monte Carlo rows for each of these SIMD targets, e.g. scalar,avx512 (see "
+                   "Rows of each mode for each of these SIMD targets, e.g. scalar,avx512 (see "
                    "glint render --help)")
       ->delimiter(',')
       ->check(CLI::IsMember(kSimdTargets))

@@ -148,11 +148,12 @@ void AddRenderOptions(CLI::App* render, RenderArgs& args, bool outputs) {
       ->check(CLI::IsMember(kSamplers))
       ->capture_default_str();
   render
-      ->add_option("--simd", args.simd,
-                   "Monte Carlo with terminal walls: the instruction set of the lanes that "
-                   "trace a pixel's camera rays in lock-step: 'auto' (the widest this CPU "
-                   "runs), 'scalar' (the same code, one lane), 'sse4' (2 lanes), 'avx2' (4) or "
-                   "'avx512' (8); every one gives the same image, bit for bit")
+      ->add_option(
+          "--simd", args.simd,
+          "Whitted mode, and Monte Carlo with terminal walls: the instruction set "
+          "of the lanes that trace a pixel's camera rays in lock-step: 'auto' (the widest this CPU "
+          "runs), 'scalar' (the same code, one lane), 'sse4' (2 lanes), 'avx2' (4) or "
+          "'avx512' (8); every one gives the same image, bit for bit")
       ->check(CLI::IsMember(kSimdTargets))
       ->capture_default_str();
   render->add_flag("-q,--quiet", args.quiet, "No progress bar and no summary line");
@@ -164,6 +165,7 @@ void RecordMonteCarloSwitches(const CLI::App* command, RenderArgs& args) {
   for (const char* name : kMonteCarloSwitches) {
     if (command->count(name) > 0) args.monteCarloSwitches.emplace_back(name);
   }
+  args.simdGiven = command->count("--simd") > 0;
 }
 
 }  // namespace glint

@@ -21,7 +21,7 @@ namespace {
 
 struct Row {
   std::string mode;
-  std::string simd;  // the lanes' target as it ran ("-" in Whitted mode: no lanes)
+  std::string simd;  // the lanes' target as it ran ("-": the MPI bench's row, auto)
   int spp = 0;
   int threads = 0;
   double seconds = 0.0;  // the median of the runs
@@ -74,9 +74,9 @@ void Run(Case& c) {
   c.cpus.push_back(t.cpu);
 }
 
-// The SIMD targets a mode's rows run: the list for Monte Carlo, none for Whitted.
-std::vector<std::string> SimdOf(const BenchArgs& args, const std::string& mode) {
-  return mode == "mc" ? args.simd : std::vector<std::string>{"-"};
+// The SIMD targets a mode's rows run: the list, in each mode.
+std::vector<std::string> SimdOf(const BenchArgs& args, const std::string& /*mode*/) {
+  return args.simd;
 }
 
 Row RowOf(const Case& c, const std::string& mode, const std::string& simd, int threads) {

@@ -66,12 +66,12 @@ std::string StatsJson(const RenderArgs& args, const RenderSetup& s, const Camera
                {"fresnel", args.fresnel},   {"strategy", args.strategy},
                {"branches", args.branches}, {"mirror_light", args.mirrorLight},
                {"caustics", args.caustics}};
-    // The camera rays the SIMD lanes traced (the others, one by one): the same image.
-    const SimdTarget simd = SimdThatRan(args);
-    j["simd"] = {{"target", SimdTargetName(simd)},
-                 {"lanes", SimdLanes(simd)},
-                 {"camera_rays_in_lanes", st.laneRays}};
   }
+  // The camera rays the SIMD lanes traced (the others, one by one): the same image.
+  const SimdTarget simd = SimdThatRan(args);
+  j["simd"] = {{"target", SimdTargetName(simd)},
+               {"lanes", SimdLanes(simd)},
+               {"camera_rays_in_lanes", st.laneRays}};
   j["view_plane_distance"] = camera.ViewPlaneDistance();
   return j.dump(2) + "\n";
 }
@@ -93,7 +93,7 @@ void PrintSummary(const RenderArgs& args, const RenderSetup& s, const RenderResu
                static_cast<double>(st.ShadowRaysTraced()),
                traced / (r.seconds > 0.0 ? r.seconds : 1e-9) / 1e6,
                static_cast<double>(st.shadowRaysByShaft));
-  if (args.mode == "mc" && st.cameraRays > 0) {
+  if (st.cameraRays > 0) {
     const SimdTarget simd = SimdThatRan(args);
     std::fprintf(stderr, "; SIMD %s (%d lane%s) for %.0f%% of the camera rays",
                  SimdTargetName(simd), SimdLanes(simd), SimdLanes(simd) == 1 ? "" : "s",

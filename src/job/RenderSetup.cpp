@@ -131,11 +131,11 @@ RenderSetup Prepare(const RenderArgs& args, bool checkOutputs) {
       throw InputError(name + ": means nothing with --walls " + args.walls +
                        " (a caustic lights a wall only with --walls diffuse)");
     }
-    if (args.walls == "diffuse" && name == std::string("--simd")) {
-      throw InputError(name +
-                       ": means nothing with --walls diffuse (the SIMD lanes trace the "
-                       "camera rays that end on terminal walls, so far)");
-    }
+  }
+  if (args.mode == "mc" && args.walls == "diffuse" && args.simdGiven) {
+    throw InputError(
+        "--simd: means nothing with --walls diffuse (the SIMD lanes trace the camera rays "
+        "that end on terminal walls, so far)");
   }
   const std::optional<SimdTarget> simd = ParseSimdTarget(args.simd);
   if (!simd)
@@ -210,7 +210,10 @@ std::unique_ptr<Integrator> MakeIntegrator(const RenderArgs& args, const RenderS
   }
   const FresnelModel fresnel =
       args.fresnel == "small-angle" ? FresnelModel::SmallAngle : FresnelModel::Exact;
-  return std::make_unique<WhittedIntegrator>(s.scene, s.mode.maxDepth, fresnel);
+  return std::make_unique<WhittedIntegrator>(
+      s.scene, s.mode.maxDepth, fresnel,
+      Camera::GeometryFor(s.scene.wall, s.scene.camera, s.width, s.height),
+      ParseSimdTarget(args.simd).value_or(SimdTarget::Auto));
 }
 
 void PrepareShaftsIfTheyPay(Camera& camera, const Integrator& integrator, const RenderSetup& s,

@@ -37,6 +37,7 @@ struct RenderArgs {
   std::string caustics = "off";
   std::string sampler = "sobol";  // the equal-time study's winner (BENCHMARKS.md)
   std::string simd = "auto";      // the lanes' instruction set (SimdTarget)
+  bool simdGiven = false;         // --simd was on the command line
   // The Monte Carlo switches given on the command line (--walls, ...): with --mode
   // whitted they mean nothing, and Prepare refuses them.
   std::vector<std::string> monteCarloSwitches;
@@ -62,8 +63,8 @@ inline const std::vector<std::string> kSamplers = {"random", "stratified", "sobo
 inline const std::vector<std::string> kSimdTargets = {"auto", "scalar", "sse4", "avx2", "avx512"};
 
 // The switches that mean something in Monte Carlo mode only.
-inline constexpr const char* kMonteCarloSwitches[] = {
-    "--walls", "--branches", "--glass", "--strategy", "--mirror-light", "--caustics", "--simd"};
+inline constexpr const char* kMonteCarloSwitches[] = {"--walls",    "--branches",     "--glass",
+                                                      "--strategy", "--mirror-light", "--caustics"};
 
 // The --sampler of the command line (checked by the parser).
 SamplerKind SamplerFromArgs(const RenderArgs& args);

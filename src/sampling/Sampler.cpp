@@ -10,13 +10,14 @@ std::optional<SamplerKind> ParseSamplerKind(std::string_view name) {
 }
 
 void Sampler::FirstGroupInLanes(int first, int count, SimdTarget target,
-                                std::array<std::array<double, kSobolLanesMax>, 4>& out) {
+                                std::array<std::array<double, kSobolLanesMax>, 4>& out,
+                                bool lightPoint) {
   if (kind_ != SamplerKind::Sobol) {
     for (int j = 0; j < count; ++j) {
       const auto lane = static_cast<std::size_t>(j);
       StartSample(first + j);
       const Sample2 p = Get2D(SampleDimension::kPixel);
-      const Sample2 l = Get2D(SampleDimension::Light(0));
+      const Sample2 l = lightPoint ? Get2D(SampleDimension::Light(0)) : Sample2{0.0, 0.0};
       out[0][lane] = p.u;
       out[1][lane] = p.v;
       out[2][lane] = l.u;

@@ -5,8 +5,56 @@
 
 namespace glint {
 
-WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth, FresnelModel fresnel)
-    : scene_(scene), maxDepth_(maxDepth), fresnel_(fresnel) {}
+WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth, FresnelModel fresnel,
+                                     std::optional<Pinhole> camera, SimdTarget simd)
+    : scene_(scene), maxDepth_(maxDepth), fresnel_(fresnel) {
+  if (camera && WhittedWallLanes::Serves(scene_.pointLights)) {
+    lanes_.emplace(scene_.wall, scene_.pointLights, *camera, simd);
+  }
+}
+
+int WhittedIntegrator::LaneWidth(const PixelShaft& shaft) const {
+  if (!lanes_ || !shaft.roomOnly) return 0;
+  // LocalLight without its specular lobe, and no children: what the lanes compute.
+  const Material& m = scene_.wall.GetMaterial(shaft.side);
+  const bool lanesServe = m.type == MaterialType::Lambertian && !(m.whittedSpecular > 0.0);
+  return lanesServe ? lanes_->Width() : 0;
+}
+
+void WhittedIntegrator::TraceLanes(RayLanes& lanes, int count, const PixelShaft& shaft,
+                                   RenderStats& stats) const {
+  PointLightLanes lights;
+  lanes_->Trace(lanes, count, shaft.side, lights);
+  lanes.object = scene_.wall.ObjectOf(shaft.side);
+  const vec3 normal = scene_.wall.Face(shaft.side).Normal();
+  // LocalLight's sum, per lane: each light the wall faces casts its shadow ray (or the
+  // shaft answers it), and adds its term in the lights' order.
+  for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
+    const vec3 d(lanes.direction[0][i], lanes.direction[1][i], lanes.direction[2][i]);
+    const vec3 p(lanes.end[0][i], lanes.end[1][i], lanes.end[2][i]);
+    const vec3 n = FacingNormal(d, normal);
+    Colour sum(0.0);
+    for (std::size_t j = 0; j < scene_.pointLights.size(); ++j) {
+      if (lights.facing[j][i] == 0.0) continue;
+      if (!Reaches(j, p, n, shaft, stats)) continue;
+      sum += Colour(lights.term[j][0][i], lights.term[j][1][i], lights.term[j][2][i]);
+    }
+    for (std::size_t c = 0; c < 3; ++c) lanes.colour[c][i] = sum[static_cast<glm::length_t>(c)];
+  }
+}
+
+bool WhittedIntegrator::Reaches(std::size_t i, vec3 p, vec3 n, const PixelShaft& shaft,
+                                RenderStats& stats) const {
+  ++stats.shadowRays;
+  if (shaft.PointLightVisible(static_cast<int>(i))) {
+    ++stats.shadowRaysByShaft;  // answered by the pixel's shaft: nothing opaque between
+    return true;
+  }
+  const vec3 position = scene_.pointLights[i].position;
+  vec3 l = position - p;  // LocalLight's l, to the bit
+  l /= std::sqrt(glm::dot(l, l));
+  return scene_.VisibleThroughTransparent(OffsetRayOrigin(p, n, l), position);
+}
 
 Colour WhittedIntegrator::Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,
                                 Sampler& /*sampler*/, RenderStats& stats) const {
@@ -26,13 +74,7 @@ Colour WhittedIntegrator::LocalLight(const Hit& hit, vec3 d, RenderStats& stats,
     l /= std::sqrt(r2);
     const double cosTheta = glm::dot(n, l);
     if (cosTheta <= 0.0) continue;
-    ++stats.shadowRays;
-    if (shaft.PointLightVisible(static_cast<int>(i))) {
-      ++stats.shadowRaysByShaft;  // answered by the pixel's shaft: nothing opaque between
-    } else if (!scene_.VisibleThroughTransparent(OffsetRayOrigin(hit.point, n, l),
-                                                 light.position)) {
-      continue;
-    }
+    if (!Reaches(i, hit.point, n, shaft, stats)) continue;
     const Colour irradiance = light.intensity * (cosTheta / r2);  // E = I cos(theta) / r^2
     double brdf = m.whittedDiffuse * kInvPi;
     if (m.whittedSpecular > 0.0) {

@@ -3,11 +3,10 @@
 // image, the counters and every ray's node.
 #include <gtest/gtest.h>
 
-#include <cstring>
-
 #include "glint/camera/Camera.hpp"
 #include "glint/core/SimdTarget.hpp"
 #include "glint/transport/MonteCarloIntegrator.hpp"
+#include "support/LaneTesting.hpp"
 #include "support/TestScenes.hpp"
 
 namespace glint {
@@ -16,30 +15,12 @@ namespace {
 constexpr int kWidth = 33;
 constexpr int kHeight = 17;
 
-// The same bits (a NaN equals itself here, and 0.0 differs from -0.0).
-bool SameBits(double a, double b) {
-  return std::memcmp(&a, &b, sizeof a) == 0;
-}
-bool SameBits(vec3 a, vec3 b) {
-  return SameBits(a.x, b.x) && SameBits(a.y, b.y) && SameBits(a.z, b.z);
-}
+using testing::ExpectSameTrees;
+using testing::LaneRender;
+using testing::SameBits;
 
-struct Rendered {
-  Image image;
-  RenderStats stats;
-};
-
-Rendered Render(const Scene& scene, const Integrator& integrator, SamplerKind sampler, int spp) {
-  Camera camera(scene.wall, scene.camera, kWidth, kHeight);
-  camera.PrepareShafts(scene, integrator.ShadowLights(), 1);
-  RenderOptions options;
-  options.raysPerPixel = spp;
-  options.seed = 5;
-  options.sampler = sampler;
-  options.threads = 1;
-  Rendered r{Image(1, 1), camera.Render(integrator, options)};
-  r.image = camera.ToImage();
-  return r;
+LaneRender Render(const Scene& scene, const Integrator& integrator, SamplerKind sampler, int spp) {
+  return testing::RenderWith(scene, integrator, sampler, spp, kWidth, kHeight);
 }
 
 TEST(TerminalWallLanes, EveryTargetRendersTheScalarImageBitForBit) {
@@ -48,7 +29,7 @@ TEST(TerminalWallLanes, EveryTargetRendersTheScalarImageBitForBit) {
   for (const SamplerKind sampler :
        {SamplerKind::Random, SamplerKind::Stratified, SamplerKind::Sobol}) {
     // 11 rays: a full block of 8 and one of 3, which leaves spare lanes on every target.
-    const Rendered expected = Render(scene, scalar, sampler, 11);
+    const LaneRender expected = Render(scene, scalar, sampler, 11);
     EXPECT_EQ(expected.stats.laneRays, 0U);
     for (const SimdTarget target : SupportedSimdTargets()) {
       SCOPED_TRACE(SimdTargetName(target));
@@ -56,12 +37,8 @@ TEST(TerminalWallLanes, EveryTargetRendersTheScalarImageBitForBit) {
       o.simd = target;
       const MonteCarloIntegrator lanes(
           scene, o, Camera::GeometryFor(scene.wall, scene.camera, kWidth, kHeight));
-      const Rendered got = Render(scene, lanes, sampler, 11);
-      int differing = 0;
-      for (std::size_t i = 0; i < got.image.Pixels().size(); ++i) {
-        differing += !SameBits(got.image.Pixels()[i], expected.image.Pixels()[i]);
-      }
-      EXPECT_EQ(differing, 0);
+      const LaneRender got = Render(scene, lanes, sampler, 11);
+      EXPECT_EQ(testing::DifferingPixels(got.image, expected.image), 0);
       // A fifth of the camera rays ran in lanes at this size (the others' shafts hold objects), and
       // some of their shadow rays were traced (not all answered by the shaft): both halves of the
       // lanes' estimate were compared.
@@ -104,19 +81,7 @@ TEST(TerminalWallLanes, EachRayWritesTheScalarNodeOfItsOwnTree) {
         const PixelPass p2 = pixel.TracePass(camera, x, y, 13, lanes, s2, b, st2, true);
         EXPECT_TRUE(SameBits(p1.sum, p2.sum));
         ASSERT_EQ(a.Size(), 13U);
-        ASSERT_EQ(b.Size(), 13U);
-        for (std::uint32_t i = 0; i < 13; ++i) {
-          EXPECT_TRUE(SameBits(a[i].start, b[i].start));
-          EXPECT_TRUE(SameBits(a[i].direction, b[i].direction));
-          EXPECT_TRUE(SameBits(a[i].end, b[i].end));
-          EXPECT_TRUE(SameBits(a[i].colour, b[i].colour));
-          EXPECT_TRUE(SameBits(a[i].weight, b[i].weight));
-          EXPECT_TRUE(SameBits(a[i].importance, b[i].importance));
-          EXPECT_EQ(a[i].object, b[i].object);
-          EXPECT_EQ(a[i].final, b[i].final);
-          EXPECT_EQ(a[i].kind, b[i].kind);
-          EXPECT_EQ(a[i].childCount, b[i].childCount);
-        }
+        ExpectSameTrees(a, b);
       }
     }
   }

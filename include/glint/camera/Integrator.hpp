@@ -37,6 +37,9 @@ class Integrator {
   virtual int LaneWidth(const PixelShaft& /*shaft*/) const { return 0; }
   // The instruction set of those lanes (resolved: never Auto); the sampler's lanes use it.
   virtual SimdTarget LaneTarget() const { return SimdTarget::Scalar; }
+  // Whether each lane's ray takes its first light point (SampleDimension::Light(0)) from
+  // the sampler, after its pixel point, as Trace would.
+  virtual bool LanesTakeLightPoint() const { return true; }
   virtual void TraceLanes(RayLanes& /*lanes*/, int /*count*/, const PixelShaft& /*shaft*/,
                           RenderStats& /*stats*/) const {}
 

@@ -99,10 +99,12 @@ class Sampler {
   // The numbers of the first two dimension pairs (SampleDimension::kPixel and
   // Light(0)) of samples first, first + 1, ... (count <= kSobolLanesMax): out[0..3][j]
   // are sample first + j's kPixel u, v and Light(0) u, v, what StartSample(first + j) and
-  // two Get2D calls give. Sobol's come from SIMD lanes on `target` (resolved, supported);
-  // the others' one by one, in the same order. Leaves the sampler as those calls would.
+  // two Get2D calls give (one, without `lightPoint`: out[2..3] are then 0). Sobol's come
+  // from SIMD lanes on `target` (resolved, supported); the others' one by one, in the same
+  // order. Leaves the sampler as those calls would.
   void FirstGroupInLanes(int first, int count, SimdTarget target,
-                         std::array<std::array<double, kSobolLanesMax>, 4>& out);
+                         std::array<std::array<double, kSobolLanesMax>, 4>& out,
+                         bool lightPoint = true);
 
   double Get1D(std::uint32_t dimension) {
     if (kind_ == SamplerKind::Sobol) {

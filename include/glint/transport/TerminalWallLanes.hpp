@@ -16,17 +16,13 @@
 #include "glint/core/SimdTarget.hpp"
 #include "glint/scene/Light.hpp"
 #include "glint/scene/Wall.hpp"
+#include "glint/transport/CameraWallLanes.hpp"
 
 namespace glint {
 
 // What the lanes need of the scene for rays that end on one wall side: constants only.
 struct WallLaneConstants {
-  std::array<double, 3> eye, viewPlane;  // the view plane's point at (0, 0) offset: its centre
-  double pixelWidth, pixelHeight, halfWidth, halfHeight;
-  int axis;               // the wall's axis (Wall::AxisOf)
-  double gapUp, gapDown;  // the eye's distance to the wall's plane for d[axis] > 0, <= 0
-  double plane;           // the wall's plane coordinate
-  std::array<double, 3> normal;
+  CameraWallLaneConstants hit;  // the camera ray to the wall
   std::array<double, 3> lightCorner, lightEdgeA, lightEdgeB, lightNormal;
   double lightArea;
   std::array<double, 3> radiance;  // the light's Le times the wall's reflectance

@@ -3,22 +3,37 @@
 // Fresnel-weighted reflection and refraction, at most `maxDepth` ray iterations.
 #pragma once
 
+#include <optional>
+
 #include "glint/camera/Integrator.hpp"
+#include "glint/camera/Pinhole.hpp"
 #include "glint/scene/Hit.hpp"
 #include "glint/scene/Scene.hpp"
 #include "glint/transport/Fresnel.hpp"
+#include "glint/transport/WhittedWallLanes.hpp"
 
 namespace glint {
 
 class WhittedIntegrator final : public Integrator {
  public:
   // `fresnel`: the glass's reflectance, the Fresnel equations or the small-angle
-  // approximation (the normal-incidence reflectance at every angle).
-  WhittedIntegrator(const Scene& scene, int maxDepth, FresnelModel fresnel = FresnelModel::Exact);
+  // approximation (the normal-incidence reflectance at every angle). With the `camera`
+  // the pixels shoot from, a roomOnly pixel's camera rays run in SIMD lanes on `simd`
+  // (WhittedWallLanes; the same image). Throws std::invalid_argument for a target the
+  // CPU lacks.
+  WhittedIntegrator(const Scene& scene, int maxDepth, FresnelModel fresnel = FresnelModel::Exact,
+                    std::optional<Pinhole> camera = std::nullopt,
+                    SimdTarget simd = SimdTarget::Auto);
 
   Colour Trace(RayTree& tree, std::uint32_t root, const PixelShaft& shaft, Sampler& sampler,
                RenderStats& stats) const override;
   PixelShaft::Lights ShadowLights() const override { return PixelShaft::Lights::Point; }
+  // A roomOnly pixel whose wall has no specular lobe runs in lanes (with the camera).
+  int LaneWidth(const PixelShaft& shaft) const override;
+  SimdTarget LaneTarget() const override { return lanes_ ? lanes_->Target() : SimdTarget::Scalar; }
+  bool LanesTakeLightPoint() const override { return false; }  // point lights: no numbers
+  void TraceLanes(RayLanes& lanes, int count, const PixelShaft& shaft,
+                  RenderStats& stats) const override;
 
   // The local term at a hit seen along direction d: for every visible point light of
   // intensity I at distance r and angle theta, with E = I cos(theta) / r^2,
@@ -37,10 +52,15 @@ class WhittedIntegrator final : public Integrator {
   // returns how many it made.
   std::uint32_t SpawnChildren(RayTree& tree, std::uint32_t index, const Hit& hit,
                               RenderStats& stats) const;
+  // Point light i, at cos(theta) > 0 from p (normal n facing the ray): counts its
+  // shadow ray and says whether the light reaches p (the shaft's answer, or a shadow
+  // ray through transparent objects).
+  bool Reaches(std::size_t i, vec3 p, vec3 n, const PixelShaft& shaft, RenderStats& stats) const;
 
   const Scene& scene_;
   int maxDepth_;
   FresnelModel fresnel_;
+  std::optional<WhittedWallLanes> lanes_;  // with the camera
 };
 
 }  // namespace glint

@@ -41,27 +41,48 @@ V OwenScramble(D d, V v, std::uint32_t seed) {
   return v;
 }
 
+// Sobol4::SampleReversed(r, dim), lane by lane. Dimension 0's directions are the
+// identity, so its point is ReverseBits(r). The others xor one table entry per byte of
+// r: gathered from memory where a register holds fewer than 8 lanes, and where it holds
+// 8, one entry per 3 bits looked up inside a register (Sobol4::OctalTableOf; 4 gathers
+// cost more than 11 in-register lookups: measured in BENCHMARKS.md, "SIMD lanes").
+template <class D, class V>
+V SampleReversed(D d, V r, int dim) {
+  if (dim == 0) return ReverseBits(d, r);
+  if constexpr (hn::MaxLanes(D()) == 8) {
+    const hn::RebindToSigned<D> di;
+    const auto seven = hn::Set(d, 7U);
+    auto x = hn::Zero(d);
+    for (int k = 0; k < Sobol4::kOctalChunks; ++k) {
+      const auto bits = hn::BitCast(di, hn::And(hn::ShiftRightSame(r, 3 * k), seven));
+      const auto table = hn::Load(d, Sobol4::OctalTableOf(dim, k));
+      x = hn::Xor(x, hn::TableLookupLanes(table, hn::IndicesFromVec(d, bits)));
+    }
+    return x;
+  } else {
+    const hn::RebindToSigned<D> di;
+    const auto byte = hn::Set(d, 0xffU);
+    const auto b0 = hn::BitCast(di, hn::And(r, byte));
+    const auto b1 = hn::BitCast(di, hn::And(hn::ShiftRight<8>(r), byte));
+    const auto b2 = hn::BitCast(di, hn::And(hn::ShiftRight<16>(r), byte));
+    const auto b3 = hn::BitCast(di, hn::ShiftRight<24>(r));
+    return hn::Xor(hn::Xor(hn::GatherIndex(d, Sobol4::TableOf(dim, 0), b0),
+                           hn::GatherIndex(d, Sobol4::TableOf(dim, 1), b1)),
+                   hn::Xor(hn::GatherIndex(d, Sobol4::TableOf(dim, 2), b2),
+                           hn::GatherIndex(d, Sobol4::TableOf(dim, 3), b3)));
+  }
+}
+
 template <class D>
 void FirstGroupIn(D d, const SobolLaneSeeds& s, std::uint32_t firstIndex, int count,
                   SobolLaneValues& out) {
-  const hn::RebindToSigned<D> di;
   const std::size_t w = hn::Lanes(d);
-  const auto byte = hn::Set(d, 0xffU);
   for (std::size_t i = 0; i < static_cast<std::size_t>(count); i += w) {
     const auto index =
         hn::Add(hn::Set(d, firstIndex + static_cast<std::uint32_t>(i)), hn::Iota(d, 0));
     const auto shuffled = OwenScramble(d, ReverseBits(d, index), s.shuffle);
-    // Sobol4::SampleReversed: the xor of one table entry per byte of the index.
-    const auto b0 = hn::BitCast(di, hn::And(shuffled, byte));
-    const auto b1 = hn::BitCast(di, hn::And(hn::ShiftRight<8>(shuffled), byte));
-    const auto b2 = hn::BitCast(di, hn::And(hn::ShiftRight<16>(shuffled), byte));
-    const auto b3 = hn::BitCast(di, hn::ShiftRight<24>(shuffled));
     for (std::size_t c = 0; c < 4; ++c) {
-      const int dim = static_cast<int>(c);
-      const auto x = hn::Xor(hn::Xor(hn::GatherIndex(d, Sobol4::TableOf(dim, 0), b0),
-                                     hn::GatherIndex(d, Sobol4::TableOf(dim, 1), b1)),
-                             hn::Xor(hn::GatherIndex(d, Sobol4::TableOf(dim, 2), b2),
-                                     hn::GatherIndex(d, Sobol4::TableOf(dim, 3), b3)));
+      const auto x = SampleReversed(d, shuffled, static_cast<int>(c));
       hn::StoreU(ReverseBits(d, OwenScramble(d, x, s.component[c])), d, out[c].data() + i);
     }
   }

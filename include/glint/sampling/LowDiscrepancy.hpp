@@ -66,6 +66,13 @@ class Sobol4 {
   static const std::uint32_t* TableOf(int d, int k) {
     return Tables()[static_cast<std::size_t>(d)][static_cast<std::size_t>(k)].data();
   }
+  // Dimension d's table for bits 3k, 3k + 1, 3k + 2 of a reversed index (k < 11; the
+  // last holds bits 30 and 31): entry b is what those bits, equal to b, xor into the
+  // point. Eight entries fill one 256-bit register, where SobolLanes looks them up.
+  static constexpr int kOctalChunks = 11;
+  static const std::uint32_t* OctalTableOf(int d, int k) {
+    return OctalTables()[static_cast<std::size_t>(d)][static_cast<std::size_t>(k)].data();
+  }
   // The point of `index` in dimension d, the plain way (a loop over the index's bits).
   static std::uint32_t Sample(std::uint32_t index, int d) {
     const std::array<std::uint32_t, 32> v = Directions(d);
@@ -130,6 +137,26 @@ class Sobol4 {
   static const std::array<ByteTables, kDimensions>& Tables() {
     static constexpr std::array<ByteTables, kDimensions> kTables = {MakeTables(0), MakeTables(1),
                                                                     MakeTables(2), MakeTables(3)};
+    return kTables;
+  }
+  using OctalTables_ = std::array<std::array<std::uint32_t, 8>, kOctalChunks>;
+  static constexpr OctalTables_ MakeOctalTables(int d) {
+    const std::array<std::uint32_t, 32> v = Directions(d);
+    OctalTables_ t{};
+    for (std::size_t chunk = 0; chunk < kOctalChunks; ++chunk) {
+      for (std::uint32_t b = 0; b < 8; ++b) {
+        std::uint32_t x = 0;
+        for (std::size_t k = 0; k < 3 && 3 * chunk + k < 32; ++k) {
+          if (((b >> k) & 1U) != 0U) x ^= ReverseBits32Constexpr(v[31 - (3 * chunk + k)]);
+        }
+        t[chunk][b] = x;
+      }
+    }
+    return t;
+  }
+  static const std::array<OctalTables_, kDimensions>& OctalTables() {
+    alignas(32) static constexpr std::array<OctalTables_, kDimensions> kTables = {
+        MakeOctalTables(0), MakeOctalTables(1), MakeOctalTables(2), MakeOctalTables(3)};
     return kTables;
   }
 };

@@ -16,6 +16,10 @@ PixelPass Pixel::TracePass(const Camera& camera, int x, int y, int rays,
     return TracePassInLanes(camera, x, y, rays, integrator, sampler, trees, stats, keepTrees,
                             cancel);
   }
+  if (sampler.Kind() == SamplerKind::Sobol && integrator.FirstHitLanes(shaft_, rays)) {
+    return TracePassWithFirstHits(camera, x, y, rays, integrator, sampler, trees, stats, keepTrees,
+                                  cancel);
+  }
   const double importance = 1.0 / rays;  // all rays of a pixel weigh the same
   PixelPass pass;
   trees.Clear();
@@ -29,13 +33,8 @@ PixelPass Pixel::TracePass(const Camera& camera, int x, int y, int rays,
     const Sample2 p = sampler.Get2D(SampleDimension::kPixel);  // a point inside the pixel
     const double px = x + p.u;
     const double py = y + p.v;
-    Ray ray;
-    ray.start = camera.Eye();
-    ray.direction = camera.DirectionThrough(px, py);
-    ray.weight = Colour(importance);
-    ray.importance = Colour(importance);
-    ray.kind = RayKind::Camera;
-    const std::uint32_t root = trees.Add(ray);
+    const std::uint32_t root =
+        trees.Add(CameraRay(camera.Eye(), camera.DirectionThrough(px, py), importance));
     ++stats.cameraRays;
     AddSample(integrator.Trace(trees, root, shaft_, sampler, stats), pass, stats);
   }
@@ -54,14 +53,7 @@ PixelPass Pixel::TracePassInLanes(const Camera& camera, int x, int y, int rays,
   const SimdTarget target = integrator.LaneTarget();
   static_assert(RayLanes::kMax == kSobolLanesMax);
   for (int first = 0; first < rays && pass.complete; first += RayLanes::kMax) {
-    int count = std::min(RayLanes::kMax, rays - first);
-    for (int i = first; i < first + count; ++i) {
-      if (Cancelled(cancel, i)) {
-        pass.complete = false;
-        count = i - first;
-        break;
-      }
-    }
+    const int count = GroupBeforeCancel(cancel, first, rays, pass);
     if (count == 0) break;
     // The sampler's numbers of these rays (the pixel point, the first light point), as
     // TracePass draws them ray by ray.
@@ -77,14 +69,11 @@ PixelPass Pixel::TracePassInLanes(const Camera& camera, int x, int y, int rays,
     // its colour into the sum in ray order, as TracePass adds them.
     for (std::size_t lane = 0; lane < static_cast<std::size_t>(count); ++lane) {
       if (!keepTrees) trees.Clear();
-      Ray ray;
-      ray.start = camera.Eye();
-      ray.direction =
-          vec3(lanes.direction[0][lane], lanes.direction[1][lane], lanes.direction[2][lane]);
+      Ray ray = CameraRay(
+          camera.Eye(),
+          vec3(lanes.direction[0][lane], lanes.direction[1][lane], lanes.direction[2][lane]),
+          importance);
       ray.end = vec3(lanes.end[0][lane], lanes.end[1][lane], lanes.end[2][lane]);
-      ray.weight = Colour(importance);
-      ray.importance = Colour(importance);
-      ray.kind = RayKind::Camera;
       ray.object = lanes.object;
       ray.final = true;
       ray.colour = Colour(lanes.colour[0][lane], lanes.colour[1][lane], lanes.colour[2][lane]);
@@ -92,6 +81,54 @@ PixelPass Pixel::TracePassInLanes(const Camera& camera, int x, int y, int rays,
       ++stats.cameraRays;
       ++stats.laneRays;
       AddSample(ray.colour, pass, stats);
+    }
+  }
+  return pass;
+}
+
+int Pixel::GroupBeforeCancel(const std::atomic<bool>* cancel, int first, int rays,
+                             PixelPass& pass) {
+  const int count = std::min(RayLanes::kMax, rays - first);
+  for (int i = first; i < first + count; ++i) {
+    if (Cancelled(cancel, i)) {
+      pass.complete = false;
+      return i - first;
+    }
+  }
+  return count;
+}
+
+PixelPass Pixel::TracePassWithFirstHits(const Camera& camera, int x, int y, int rays,
+                                        const Integrator& integrator, Sampler& sampler,
+                                        RayTree& trees, RenderStats& stats, bool keepTrees,
+                                        const std::atomic<bool>* cancel) const {
+  const double importance = 1.0 / rays;
+  PixelPass pass;
+  trees.Clear();
+  RayLanes lanes;
+  std::array<std::array<double, kSobolLanesMax>, 4> numbers{};
+  const SimdTarget target = integrator.LaneTarget();
+  for (int first = 0; first < rays && pass.complete; first += RayLanes::kMax) {
+    const int count = GroupBeforeCancel(cancel, first, rays, pass);
+    if (count == 0) break;
+    // The sampler's first numbers of these rays and their first hits, in lanes; then
+    // each ray as TracePass traces it, its sample started from the lane's numbers.
+    sampler.FirstGroupsInLanes(first, count, target, numbers);
+    for (std::size_t lane = 0; lane < static_cast<std::size_t>(count); ++lane) {
+      lanes.px[lane] = x + numbers[0][lane];
+      lanes.py[lane] = y + numbers[1][lane];
+    }
+    integrator.FindFirstHits(lanes, count);
+    for (int lane = 0; lane < count; ++lane) {
+      const auto j = static_cast<std::size_t>(lane);
+      if (!keepTrees) trees.Clear();
+      sampler.StartSampleWith(first + lane, numbers, j);
+      const std::uint32_t root = trees.Add(CameraRay(
+          camera.Eye(), vec3(lanes.direction[0][j], lanes.direction[1][j], lanes.direction[2][j]),
+          importance));
+      ++stats.cameraRays;
+      AddSample(integrator.TraceFromLane(trees, root, shaft_, lanes, lane, sampler, stats), pass,
+                stats);
     }
   }
   return pass;

@@ -1,5 +1,7 @@
 #include "glint/core/SimdTarget.hpp"
 
+#include <stdexcept>
+
 #include <hwy/targets.h>
 
 #include <array>
@@ -69,6 +71,14 @@ std::string SupportedSimdTargetNames() {
     names += SimdTargetName(t);
   }
   return names;
+}
+
+void RequireSimdTarget(SimdTarget target, bool compiled) {
+  if (!SimdTargetSupported(target) || !compiled) {
+    throw std::invalid_argument(std::string("this CPU does not run SIMD target '") +
+                                SimdTargetName(target) +
+                                "'; it runs: " + SupportedSimdTargetNames());
+  }
 }
 
 }  // namespace glint

@@ -25,6 +25,13 @@ void Sampler::FirstGroupInLanes(int first, int count, SimdTarget target,
     }
     return;
   }
+  FirstGroupsInLanes(first, count, target, out);
+  // The state StartSample(first + count - 1) leaves (its first group from the lanes).
+  StartSampleWith(first + count - 1, out, static_cast<std::size_t>(count - 1));
+}
+
+void Sampler::FirstGroupsInLanes(int first, int count, SimdTarget target,
+                                 std::array<std::array<double, kSobolLanesMax>, 4>& out) const {
   const SobolLaneSeeds seeds{cached_[0].shuffle, cached_[0].component};
   SobolLaneValues values;
   SobolFirstGroupLanes(target, seeds,
@@ -34,11 +41,6 @@ void Sampler::FirstGroupInLanes(int first, int count, SimdTarget target,
     for (std::size_t j = 0; j < static_cast<std::size_t>(count); ++j)
       out[c][j] = ToUnit(values[c][j]);
   }
-  // The state StartSample(first + count - 1) leaves (its first group from the lanes).
-  inPass_ = static_cast<std::uint32_t>(first + count - 1);
-  reversedIndex_ = ReverseBits32(static_cast<std::uint32_t>(firstSample_ + inPass_));
-  for (std::size_t c = 0; c < 4; ++c) firstGroup_[c] = out[c][static_cast<std::size_t>(count - 1)];
-  paddingReady_ = false;
 }
 
 const char* SamplerName(SamplerKind kind) {

@@ -4,44 +4,48 @@ namespace glint {
 
 bool Scene::Intersect(vec3 origin, vec3 direction, Hit& hit, bool withAreaLight) const {
   // Distances first, the hit record once for the winner: most candidates lose.
-  enum class Winner { None, Wall, Sphere, Cube, Light };
-  Winner winner = Winner::None;
+  Closest winner = Closest::None;
   double t = kInfinity;
   int index = 0;
   int face = 0;
-  if (wall.Nearer(origin, direction, t, face)) winner = Winner::Wall;
+  if (wall.Nearer(origin, direction, t, face)) winner = Closest::Wall;
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     if (spheres[i].Nearer(origin, direction, t)) {
-      winner = Winner::Sphere;
+      winner = Closest::Sphere;
       index = static_cast<int>(i);
     }
   }
   for (std::size_t i = 0; i < cubes.size(); ++i) {
     if (cubes[i].Nearer(origin, direction, t, face)) {
-      winner = Winner::Cube;
+      winner = Closest::Cube;
       index = static_cast<int>(i);
     }
   }
   if (withAreaLight && light) {
     // The light is coplanar with the ceiling: on a tie (equal t up to round-off) the
     // light wins, so the allowance scales with t.
-    const double tMax = winner != Winner::None ? t * (1.0 + 1e-12) + 1e-15 : kInfinity;
-    if (light->Shape().Intersect(origin, direction, tMax, t)) winner = Winner::Light;
+    const double tMax = winner != Closest::None ? t * (1.0 + 1e-12) + 1e-15 : kInfinity;
+    if (light->Shape().Intersect(origin, direction, tMax, t)) winner = Closest::Light;
   }
+  return FillClosest(winner, index, face, t, origin, direction, hit);
+}
+
+bool Scene::FillClosest(Closest winner, int index, int face, double t, vec3 origin, vec3 direction,
+                        Hit& hit) const {
   switch (winner) {
-    case Winner::None:
+    case Closest::None:
       hit = Hit{};
       return false;
-    case Winner::Wall:
+    case Closest::Wall:
       wall.FillHit(origin, direction, t, face, hit);
       break;
-    case Winner::Sphere:
+    case Closest::Sphere:
       spheres[static_cast<std::size_t>(index)].FillHit(origin, direction, t, hit);
       break;
-    case Winner::Cube:
+    case Closest::Cube:
       cubes[static_cast<std::size_t>(index)].FillHit(origin, direction, t, face, hit);
       break;
-    case Winner::Light:
+    case Closest::Light:
       hit.t = t;
       hit.point = light->Shape().PointAt(origin, direction, t);
       hit.normal = light->Normal();

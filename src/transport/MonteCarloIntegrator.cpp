@@ -40,7 +40,19 @@ MonteCarloIntegrator::MonteCarloIntegrator(const Scene& scene, MonteCarloOptions
   }
   if (options_.walls == MonteCarloOptions::Walls::Terminal && camera) {
     lanes_.emplace(scene_.wall, light_, *camera, options_.simd);
+    hitLanes_.emplace(scene_, *camera, /*withAreaLight=*/true, options_.simd);
   }
+}
+
+Colour MonteCarloIntegrator::TraceFromLane(RayTree& tree, std::uint32_t root,
+                                           const PixelShaft& shaft, const RayLanes& lanes, int lane,
+                                           Sampler& sampler, RenderStats& stats) const {
+  if (lanes.closest[static_cast<std::size_t>(lane)] < 0.0) {
+    return Trace(tree, root, shaft, sampler, stats);
+  }
+  Hit hit;
+  hitLanes_->FillHit(lanes, lane, hit);
+  return TraceNode(tree, root, root, sampler, stats, shaft, &hit);
 }
 
 void MonteCarloIntegrator::TraceLanes(RayLanes& lanes, int count, const PixelShaft& shaft,
@@ -180,16 +192,21 @@ void MonteCarloIntegrator::SetCausticRatios(const Ray& ray, const Hit& hit, vec3
 }
 
 Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::uint32_t root,
-                                       Sampler& sampler, RenderStats& stats,
-                                       PixelShaft shaft) const {
+                                       Sampler& sampler, RenderStats& stats, PixelShaft shaft,
+                                       const Hit* known) const {
   // A reference, not a copy (copying the node cost ~10% of the render): valid until
   // AddChildren below may move the nodes; what is needed after that is read first.
   const Ray& ray = tree[index];
   const std::uint32_t node = index - root;  // its number in the tree: its dimensions
   Hit hit;
-  if (shaft.roomOnly) {
+  if (known != nullptr) {
+    hit = *known;
+  } else if (shaft.roomOnly) {
     scene_.IntersectRoom(ray.start, ray.direction, shaft.side, hit);
-  } else if (!scene_.Intersect(ray.start, ray.direction, hit, /*withAreaLight=*/true)) {
+  } else {
+    scene_.Intersect(ray.start, ray.direction, hit, /*withAreaLight=*/true);
+  }
+  if (!(hit.t < kInfinity)) {
     tree[index].end = ray.start;
     tree[index].final = true;  // out through the open front: radiance 0
     tree[index].colour = Colour(0.0);

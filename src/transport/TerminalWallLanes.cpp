@@ -3,8 +3,6 @@
 #include "glint/transport/TerminalWallLanes.hpp"
 
 #include <cstddef>
-#include <stdexcept>
-#include <string>
 
 #include "glint/core/Math.hpp"
 
@@ -93,32 +91,13 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace glint {
 
-namespace {
-WallLaneKernel KernelFor(SimdTarget target) {
-  switch (target) {
-    case SimdTarget::Sse4:
-      return HWY_CHOOSE_SSE4(TraceWallLanes);
-    case SimdTarget::Avx2:
-      return HWY_CHOOSE_AVX2(TraceWallLanes);
-    case SimdTarget::Avx512:
-      return HWY_CHOOSE_AVX3(TraceWallLanes);
-    case SimdTarget::Auto:
-    case SimdTarget::Scalar:
-      break;
-  }
-  return &HWY_STATIC_DISPATCH(TraceWallLane);
-}
-
-}  // namespace
-
 TerminalWallLanes::TerminalWallLanes(const Wall& room, const Light& light, const Pinhole& camera,
                                      SimdTarget target)
-    : target_(ResolveSimdTarget(target)), width_(SimdLanes(target_)), kernel_(KernelFor(target_)) {
-  if (!SimdTargetSupported(target_) || kernel_ == nullptr) {
-    throw std::invalid_argument(std::string("this CPU does not run SIMD target '") +
-                                SimdTargetName(target_) +
-                                "'; it runs: " + SupportedSimdTargetNames());
-  }
+    : target_(ResolveSimdTarget(target)),
+      width_(SimdLanes(target_)),
+      kernel_(KernelForTarget<WallLaneKernel>(
+          target_, HWY_CHOOSE_SSE4(TraceWallLanes), HWY_CHOOSE_AVX2(TraceWallLanes),
+          HWY_CHOOSE_AVX3(TraceWallLanes), &HWY_STATIC_DISPATCH(TraceWallLane))) {
   for (int side = 0; side < Wall::kSides; ++side) {
     WallLaneConstants& k = sides_[static_cast<std::size_t>(side)];
     k.hit = CameraWallConstantsOf(room, camera, side);

@@ -10,7 +10,19 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth, FresnelMo
     : scene_(scene), maxDepth_(maxDepth), fresnel_(fresnel) {
   if (camera && WhittedWallLanes::Serves(scene_.pointLights)) {
     lanes_.emplace(scene_.wall, scene_.pointLights, *camera, simd);
+    hitLanes_.emplace(scene_, *camera, /*withAreaLight=*/false, simd);
   }
+}
+
+Colour WhittedIntegrator::TraceFromLane(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,
+                                        const RayLanes& lanes, int lane, Sampler& sampler,
+                                        RenderStats& stats) const {
+  if (lanes.closest[static_cast<std::size_t>(lane)] < 0.0) {
+    return Trace(tree, root, shaft, sampler, stats);
+  }
+  Hit hit;
+  hitLanes_->FillHit(lanes, lane, hit);
+  return TraceNode(tree, root, stats, shaft, &hit);
 }
 
 int WhittedIntegrator::LaneWidth(const PixelShaft& shaft) const {
@@ -138,13 +150,18 @@ std::uint32_t WhittedIntegrator::SpawnChildren(RayTree& tree, std::uint32_t inde
 }
 
 Colour WhittedIntegrator::TraceNode(RayTree& tree, std::uint32_t index, RenderStats& stats,
-                                    PixelShaft shaft) const {
+                                    PixelShaft shaft, const Hit* known) const {
   const vec3 origin = tree[index].start;
   const vec3 d = tree[index].direction;
   Hit hit;
-  if (shaft.roomOnly) {
+  if (known != nullptr) {
+    hit = *known;
+  } else if (shaft.roomOnly) {
     scene_.IntersectRoom(origin, d, shaft.side, hit);
-  } else if (!scene_.Intersect(origin, d, hit, /*withAreaLight=*/false)) {
+  } else {
+    scene_.Intersect(origin, d, hit, /*withAreaLight=*/false);
+  }
+  if (!(hit.t < kInfinity)) {
     // Left the room through the open front: radiance 0.
     tree[index].final = true;
     tree[index].end = origin;

@@ -4,7 +4,6 @@
 
 #include <cstddef>
 #include <stdexcept>
-#include <string>
 
 #include "glint/core/Math.hpp"
 
@@ -79,31 +78,13 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace glint {
 
-namespace {
-WhittedLaneKernel KernelFor(SimdTarget target) {
-  switch (target) {
-    case SimdTarget::Sse4:
-      return HWY_CHOOSE_SSE4(TraceWhittedLanes);
-    case SimdTarget::Avx2:
-      return HWY_CHOOSE_AVX2(TraceWhittedLanes);
-    case SimdTarget::Avx512:
-      return HWY_CHOOSE_AVX3(TraceWhittedLanes);
-    case SimdTarget::Auto:
-    case SimdTarget::Scalar:
-      break;
-  }
-  return &HWY_STATIC_DISPATCH(TraceWhittedLane);
-}
-}  // namespace
-
 WhittedWallLanes::WhittedWallLanes(const Wall& room, const std::vector<PointLight>& lights,
                                    const Pinhole& camera, SimdTarget target)
-    : target_(ResolveSimdTarget(target)), width_(SimdLanes(target_)), kernel_(KernelFor(target_)) {
-  if (!SimdTargetSupported(target_) || kernel_ == nullptr) {
-    throw std::invalid_argument(std::string("this CPU does not run SIMD target '") +
-                                SimdTargetName(target_) +
-                                "'; it runs: " + SupportedSimdTargetNames());
-  }
+    : target_(ResolveSimdTarget(target)),
+      width_(SimdLanes(target_)),
+      kernel_(KernelForTarget<WhittedLaneKernel>(
+          target_, HWY_CHOOSE_SSE4(TraceWhittedLanes), HWY_CHOOSE_AVX2(TraceWhittedLanes),
+          HWY_CHOOSE_AVX3(TraceWhittedLanes), &HWY_STATIC_DISPATCH(TraceWhittedLane))) {
   if (!Serves(lights))
     throw std::invalid_argument("the Whitted lanes serve at most 4 point lights");
   for (int side = 0; side < Wall::kSides; ++side) {

@@ -43,6 +43,19 @@ class Integrator {
   virtual void TraceLanes(RayLanes& /*lanes*/, int /*count*/, const PixelShaft& /*shaft*/,
                           RenderStats& /*stats*/) const {}
 
+  // First-hit lanes, for the camera rays of a pixel that LaneWidth leaves to Trace:
+  // whether a pass of `rays` rays of a pixel with `shaft` uses them. FindFirstHits finds the first
+  // hits of lanes [0, count) from their px, py (RayLanes: direction, t, closest, ...);
+  // TraceFromLane traces tree[root], lane `lane`'s camera ray, on from its hit as Trace would, to
+  // the bit.
+  virtual bool FirstHitLanes(const PixelShaft& /*shaft*/, int /*rays*/) const { return false; }
+  virtual void FindFirstHits(RayLanes& /*lanes*/, int /*count*/) const {}
+  virtual Colour TraceFromLane(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,
+                               const RayLanes& /*lanes*/, int /*lane*/, Sampler& sampler,
+                               RenderStats& stats) const {
+    return Trace(tree, root, shaft, sampler, stats);
+  }
+
   // The shadow rays it casts, for Camera::PrepareShafts.
   virtual PixelShaft::Lights ShadowLights() const = 0;
 

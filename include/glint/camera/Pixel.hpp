@@ -113,6 +113,26 @@ class Pixel {
                              const Integrator& integrator, Sampler& sampler, RayTree& trees,
                              RenderStats& stats, bool keepTrees,
                              const std::atomic<bool>* cancel) const;
+  // TracePass for a pixel whose camera rays find their first hits in lanes
+  // (Integrator::FirstHitLanes) and are traced on one by one: the same bits.
+  PixelPass TracePassWithFirstHits(const Camera& camera, int x, int y, int rays,
+                                   const Integrator& integrator, Sampler& sampler, RayTree& trees,
+                                   RenderStats& stats, bool keepTrees,
+                                   const std::atomic<bool>* cancel) const;
+  // The number of rays of the group from `first` (at most RayLanes::kMax) that run before
+  // a cancel; clears pass.complete if one comes.
+  static int GroupBeforeCancel(const std::atomic<bool>* cancel, int first, int rays,
+                               PixelPass& pass);
+  // A camera ray's tree root: from the eye along unit `direction`, importance 1/N.
+  static Ray CameraRay(vec3 eye, vec3 direction, double importance) {
+    Ray ray;
+    ray.start = eye;
+    ray.direction = direction;
+    ray.weight = Colour(importance);
+    ray.importance = Colour(importance);
+    ray.kind = RayKind::Camera;
+    return ray;
+  }
   // Whether the pass stops before ray i: a cancel, looked at every 256 rays.
   static bool Cancelled(const std::atomic<bool>* cancel, int i) {
     return cancel != nullptr && (i & 255) == 255 && cancel->load(std::memory_order_relaxed);

@@ -25,6 +25,11 @@ struct RayLanes {
   alignas(64) std::array<Lane, 3> lightPoint{};
   alignas(64) Lane lit{};
   std::int32_t object = -1;  // the object every ray ended at
+  // Out, from CameraHitLanes (pixels whose rays may meet objects): each ray's first hit,
+  // at distance t, as Scene::Intersect finds it: Scene::Closest's code, -1 where the
+  // lanes leave the ray to Scene::Intersect (a rare case: a direction component 0, ...);
+  // the sphere's or cube's index; the box face (IntersectSlabs' order) of the wall or cube.
+  alignas(64) Lane t{}, closest{}, closestIndex{}, closestFace{};
 };
 
 }  // namespace glint

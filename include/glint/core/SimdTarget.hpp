@@ -25,4 +25,20 @@ SimdTarget ResolveSimdTarget(SimdTarget target);
 // "scalar, sse4, avx2, avx512": the supported targets' names, for messages.
 std::string SupportedSimdTargetNames();
 
+// Throws as KernelForTarget does, unless the CPU runs `target` and it is `compiled`.
+void RequireSimdTarget(SimdTarget target, bool compiled);
+
+// A lane kernel's version for `target` (resolved) among one per target (Highway's
+// HWY_CHOOSE_*, null where not compiled in; `scalar` is the one-lane form); throws
+// std::invalid_argument naming the targets this CPU runs if it does not run `target`.
+template <class Kernel>
+Kernel KernelForTarget(SimdTarget target, Kernel sse4, Kernel avx2, Kernel avx512, Kernel scalar) {
+  Kernel k = scalar;
+  if (target == SimdTarget::Sse4) k = sse4;
+  if (target == SimdTarget::Avx2) k = avx2;
+  if (target == SimdTarget::Avx512) k = avx512;
+  RequireSimdTarget(target, k != nullptr);
+  return k;
+}
+
 }  // namespace glint

@@ -106,6 +106,20 @@ class Sampler {
                          std::array<std::array<double, kSobolLanesMax>, 4>& out,
                          bool lightPoint = true);
 
+  // Sobol only: the first dimension groups (SampleDimension::kPixel and Light(0)) of
+  // samples first, first + 1, ... (count <= kSobolLanesMax), out[0..3][j] for sample
+  // first + j, from SIMD lanes on `target`, leaving the sampler as it was;
+  // StartSampleWith(first + j, out[.][j]) then starts each sample as StartSample would.
+  void FirstGroupsInLanes(int first, int count, SimdTarget target,
+                          std::array<std::array<double, kSobolLanesMax>, 4>& out) const;
+  void StartSampleWith(int i, const std::array<std::array<double, kSobolLanesMax>, 4>& groups,
+                       std::size_t lane) {
+    inPass_ = static_cast<std::uint32_t>(i);
+    reversedIndex_ = ReverseBits32(static_cast<std::uint32_t>(firstSample_ + inPass_));
+    for (std::size_t c = 0; c < 4; ++c) firstGroup_[c] = groups[c][lane];
+    paddingReady_ = false;
+  }
+
   double Get1D(std::uint32_t dimension) {
     if (kind_ == SamplerKind::Sobol) {
       if (dimension < 4) return firstGroup_[dimension];

@@ -28,6 +28,10 @@ class Cube {
   void FillHit(vec3 origin, vec3 direction, double t, int face, Hit& hit) const;
 
   vec3 Position() const { return position_; }
+  vec3 MaxCorner() const { return maxCorner_; }
+  // The bounding sphere's radius and its square (MissesBound; CameraHitLanes).
+  double BoundRadius() const { return boundRadius_; }
+  double BoundRadius2() const { return boundRadius2_; }
   double Size() const { return size_; }
   vec3 Centre() const { return centre_; }
   // Support function h(n) = max over the cube of n.x (shaft culling).

@@ -27,6 +27,9 @@ class Rectangle {
   vec3 EdgeA() const { return edgeA_; }
   vec3 EdgeB() const { return edgeB_; }
   vec3 Normal() const { return normal_; }
+  // a / |a|^2 and b / |b|^2: a point's (u, v) are dot(p - corner, InvA()), ... .
+  vec3 InvA() const { return invA_; }
+  vec3 InvB() const { return invB_; }
   double Area() const { return area_; }
   vec3 PointFromUV(double u, double v) const { return corner_ + u * edgeA_ + v * edgeB_; }
   vec3 Centre() const { return PointFromUV(0.5, 0.5); }

@@ -50,6 +50,8 @@ class Wall {
   const Material& GetMaterial(int side) const { return materials_[side]; }
   // True if p lies inside the room (closed box).
   bool Contains(vec3 p, double tolerance = 0.0) const;
+  // The wall side on box face `face` (IntersectSlabs' order), -1 for the open front.
+  static int SideOfFace(int face) { return kSideOfFace[static_cast<std::size_t>(face)]; }
   // The axis (0 = x, 1 = y, 2 = z) that wall `side` is perpendicular to.
   static int AxisOf(int side) {
     static constexpr std::array<int, kSides> kAxisOfSide = {0, 1, 0, 1, 2};

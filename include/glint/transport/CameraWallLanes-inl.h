@@ -26,16 +26,17 @@ struct CameraWallHit {
   V dx, dy, dz, ex, ey, ez, nx, ny, nz;
 };
 
-// Lanes of double (glint's) or of float (the single-precision study, bench_lanes_precision).
+// Pinhole::DirectionThrough in lanes: the unit direction through image points (px, py),
+// into h.dx, h.dy, h.dz.
 template <class D>
-HWY_INLINE CameraWallHit<hwy::HWY_NAMESPACE::Vec<D>> CameraRayToWall(
-    D d, const CameraWallLaneConstants& k, const hwy::HWY_NAMESPACE::TFromD<D>* pxIn,
-    const hwy::HWY_NAMESPACE::TFromD<D>* pyIn) {
+HWY_INLINE void CameraDirection(D d, const CameraWallLaneConstants& k,
+                                const hwy::HWY_NAMESPACE::TFromD<D>* pxIn,
+                                const hwy::HWY_NAMESPACE::TFromD<D>* pyIn,
+                                CameraWallHit<hwy::HWY_NAMESPACE::Vec<D>>& h) {
   namespace hn = hwy::HWY_NAMESPACE;
   using T = hn::TFromD<D>;
   const auto set = [d](double x) { return hn::Set(d, static_cast<T>(x)); };
-  const auto zero = hn::Zero(d);
-  // Pinhole::DirectionThrough: v = planeCentre + (sx, sy, 0) - eye, v / |v|.
+  // v = planeCentre + (sx, sy, 0) - eye, v / |v|.
   const auto px = hn::Load(d, pxIn);
   const auto py = hn::Load(d, pyIn);
   const auto sx = hn::Sub(hn::Mul(px, set(k.pixelWidth)), set(k.halfWidth));
@@ -45,10 +46,22 @@ HWY_INLINE CameraWallHit<hwy::HWY_NAMESPACE::Vec<D>> CameraRayToWall(
   const auto vz = set((k.viewPlane[2] + 0.0) - k.eye[2]);
   const auto len2 = hn::Add(hn::Add(hn::Mul(vx, vx), hn::Mul(vy, vy)), hn::Mul(vz, vz));
   const auto inv = hn::Div(set(1.0), hn::Sqrt(len2));  // glm::inversesqrt
-  CameraWallHit<hn::Vec<D>> h{};
   h.dx = hn::Mul(vx, inv);
   h.dy = hn::Mul(vy, inv);
   h.dz = hn::Mul(vz, inv);
+}
+
+// Lanes of double (glint's) or of float (the single-precision study, bench_lanes_precision).
+template <class D>
+HWY_INLINE CameraWallHit<hwy::HWY_NAMESPACE::Vec<D>> CameraRayToWall(
+    D d, const CameraWallLaneConstants& k, const hwy::HWY_NAMESPACE::TFromD<D>* pxIn,
+    const hwy::HWY_NAMESPACE::TFromD<D>* pyIn) {
+  namespace hn = hwy::HWY_NAMESPACE;
+  using T = hn::TFromD<D>;
+  const auto set = [d](double x) { return hn::Set(d, static_cast<T>(x)); };
+  const auto zero = hn::Zero(d);
+  CameraWallHit<hn::Vec<D>> h{};
+  CameraDirection(d, k, pxIn, pyIn, h);
 
   // Wall::DistanceThrough: t = gap / |d[axis]|; FillHit: eye + t d on the wall's plane.
   const auto da = k.axis == 0 ? h.dx : (k.axis == 1 ? h.dy : h.dz);

@@ -11,6 +11,7 @@
 #include "glint/scene/Light.hpp"
 #include "glint/scene/Material.hpp"
 #include "glint/scene/Scene.hpp"
+#include "glint/transport/CameraHitLanes.hpp"
 #include "glint/transport/Fresnel.hpp"
 #include "glint/transport/LightTracer.hpp"
 #include "glint/transport/MirroredLight.hpp"
@@ -52,6 +53,14 @@ class MonteCarloIntegrator final : public Integrator {
   SimdTarget LaneTarget() const override { return lanes_ ? lanes_->Target() : SimdTarget::Scalar; }
   void TraceLanes(RayLanes& lanes, int count, const PixelShaft& shaft,
                   RenderStats& stats) const override;
+  // The other pixels' camera rays find their first hit in lanes too (terminal walls).
+  bool FirstHitLanes(const PixelShaft& shaft, int rays) const override {
+    return hitLanes_ && !shaft.roomOnly && hitLanes_->Pays(rays);
+  }
+  void FindFirstHits(RayLanes& lanes, int count) const override { hitLanes_->Trace(lanes, count); }
+  Colour TraceFromLane(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,
+                       const RayLanes& lanes, int lane, Sampler& sampler,
+                       RenderStats& stats) const override;
   int LightPathsPerRay() const override { return tracer_ ? LightTracer::kPathsPerRay : 0; }
   void TraceLightPaths(Camera& camera, Sampler& sampler, int count,
                        RenderStats& stats) const override {
@@ -115,9 +124,10 @@ class MonteCarloIntegrator final : public Integrator {
   Colour EndAtTerminalWall(Ray& ray, const Hit& hit, vec3 n, std::uint32_t node, Sampler& sampler,
                            RenderStats& stats, bool unoccluded) const;
 
-  // `shaft`: what is known in advance of this ray (the camera ray's pixel), or nothing.
+  // `shaft`: what is known in advance of this ray (the camera ray's pixel), or nothing;
+  // `known`: its hit, found already (CameraHitLanes; t infinite: it met nothing), or null.
   Colour TraceNode(RayTree& tree, std::uint32_t index, std::uint32_t root, Sampler& sampler,
-                   RenderStats& stats, PixelShaft shaft = {}) const;
+                   RenderStats& stats, PixelShaft shaft = {}, const Hit* known = nullptr) const;
   // How much of the light's emission a ray that hit it counts: 1, an MIS weight, or 0
   // where next-event estimation has counted it already.
   double EmissionWeight(const Ray& ray, vec3 lightPoint) const;
@@ -136,6 +146,7 @@ class MonteCarloIntegrator final : public Integrator {
   bool useMirrored_;                   // diffuse walls, MirrorLight::Nee, and mirrors in the scene
   std::optional<LightTracer> tracer_;  // Caustics::Light
   std::optional<TerminalWallLanes> lanes_;  // Walls::Terminal, with the camera
+  std::optional<CameraHitLanes> hitLanes_;  // the same
 };
 
 // Inline: the walls' hits, most of a render, take this path.

@@ -9,6 +9,7 @@
 #include "glint/camera/Pinhole.hpp"
 #include "glint/scene/Hit.hpp"
 #include "glint/scene/Scene.hpp"
+#include "glint/transport/CameraHitLanes.hpp"
 #include "glint/transport/Fresnel.hpp"
 #include "glint/transport/WhittedWallLanes.hpp"
 
@@ -34,6 +35,14 @@ class WhittedIntegrator final : public Integrator {
   bool LanesTakeLightPoint() const override { return false; }  // point lights: no numbers
   void TraceLanes(RayLanes& lanes, int count, const PixelShaft& shaft,
                   RenderStats& stats) const override;
+  // The other pixels' camera rays find their first hit in lanes too.
+  bool FirstHitLanes(const PixelShaft& shaft, int rays) const override {
+    return hitLanes_ && LaneWidth(shaft) == 0 && hitLanes_->Pays(rays);
+  }
+  void FindFirstHits(RayLanes& lanes, int count) const override { hitLanes_->Trace(lanes, count); }
+  Colour TraceFromLane(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,
+                       const RayLanes& lanes, int lane, Sampler& sampler,
+                       RenderStats& stats) const override;
 
   // The local term at a hit seen along direction d: for every visible point light of
   // intensity I at distance r and angle theta, with E = I cos(theta) / r^2,
@@ -45,9 +54,10 @@ class WhittedIntegrator final : public Integrator {
   Colour LocalLight(const Hit& hit, vec3 d, RenderStats& stats, PixelShaft shaft = {}) const;
 
  private:
-  // `shaft`: what is known in advance of this ray (the camera ray's pixel), or nothing.
-  Colour TraceNode(RayTree& tree, std::uint32_t index, RenderStats& stats,
-                   PixelShaft shaft = {}) const;
+  // `shaft`: what is known in advance of this ray (the camera ray's pixel), or nothing;
+  // `known`: its hit, found already (CameraHitLanes; t infinite: it met nothing), or null.
+  Colour TraceNode(RayTree& tree, std::uint32_t index, RenderStats& stats, PixelShaft shaft = {},
+                   const Hit* known = nullptr) const;
   // Creates the reflected and refracted children of tree[index] for its hit and
   // returns how many it made.
   std::uint32_t SpawnChildren(RayTree& tree, std::uint32_t index, const Hit& hit,
@@ -60,7 +70,8 @@ class WhittedIntegrator final : public Integrator {
   const Scene& scene_;
   int maxDepth_;
   FresnelModel fresnel_;
-  std::optional<WhittedWallLanes> lanes_;  // with the camera
+  std::optional<WhittedWallLanes> lanes_;   // with the camera
+  std::optional<CameraHitLanes> hitLanes_;  // the same
 };
 
 }  // namespace glint

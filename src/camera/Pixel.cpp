@@ -41,20 +41,36 @@ PixelPass Pixel::TracePass(const Camera& camera, int x, int y, int rays,
   return pass;
 }
 
+template <class TraceGroup>
+PixelPass Pixel::TraceGroups(int rays, RayTree& trees, const std::atomic<bool>* cancel,
+                             TraceGroup traceGroup) {
+  PixelPass pass;
+  trees.Clear();
+  for (int first = 0; first < rays; first += RayLanes::kMax) {
+    int count = std::min(RayLanes::kMax, rays - first);
+    for (int i = first; i < first + count; ++i) {
+      if (Cancelled(cancel, i)) {
+        pass.complete = false;
+        count = i - first;
+        break;
+      }
+    }
+    if (count > 0) traceGroup(first, count, pass);
+    if (!pass.complete) break;
+  }
+  return pass;
+}
+
 PixelPass Pixel::TracePassInLanes(const Camera& camera, int x, int y, int rays,
                                   const Integrator& integrator, Sampler& sampler, RayTree& trees,
                                   RenderStats& stats, bool keepTrees,
                                   const std::atomic<bool>* cancel) const {
   const double importance = 1.0 / rays;
-  PixelPass pass;
-  trees.Clear();
   RayLanes lanes;
   std::array<std::array<double, kSobolLanesMax>, 4> numbers{};
   const SimdTarget target = integrator.LaneTarget();
   static_assert(RayLanes::kMax == kSobolLanesMax);
-  for (int first = 0; first < rays && pass.complete; first += RayLanes::kMax) {
-    const int count = GroupBeforeCancel(cancel, first, rays, pass);
-    if (count == 0) break;
+  return TraceGroups(rays, trees, cancel, [&](int first, int count, PixelPass& pass) {
     // The sampler's numbers of these rays (the pixel point, the first light point), as
     // TracePass draws them ray by ray.
     sampler.FirstGroupInLanes(first, count, target, numbers, integrator.LanesTakeLightPoint());
@@ -82,20 +98,7 @@ PixelPass Pixel::TracePassInLanes(const Camera& camera, int x, int y, int rays,
       ++stats.laneRays;
       AddSample(ray.colour, pass, stats);
     }
-  }
-  return pass;
-}
-
-int Pixel::GroupBeforeCancel(const std::atomic<bool>* cancel, int first, int rays,
-                             PixelPass& pass) {
-  const int count = std::min(RayLanes::kMax, rays - first);
-  for (int i = first; i < first + count; ++i) {
-    if (Cancelled(cancel, i)) {
-      pass.complete = false;
-      return i - first;
-    }
-  }
-  return count;
+  });
 }
 
 PixelPass Pixel::TracePassWithFirstHits(const Camera& camera, int x, int y, int rays,
@@ -103,14 +106,10 @@ PixelPass Pixel::TracePassWithFirstHits(const Camera& camera, int x, int y, int 
                                         RayTree& trees, RenderStats& stats, bool keepTrees,
                                         const std::atomic<bool>* cancel) const {
   const double importance = 1.0 / rays;
-  PixelPass pass;
-  trees.Clear();
   RayLanes lanes;
   std::array<std::array<double, kSobolLanesMax>, 4> numbers{};
   const SimdTarget target = integrator.LaneTarget();
-  for (int first = 0; first < rays && pass.complete; first += RayLanes::kMax) {
-    const int count = GroupBeforeCancel(cancel, first, rays, pass);
-    if (count == 0) break;
+  return TraceGroups(rays, trees, cancel, [&](int first, int count, PixelPass& pass) {
     // The sampler's first numbers of these rays and their first hits, in lanes; then
     // each ray as TracePass traces it, its sample started from the lane's numbers.
     sampler.FirstGroupsInLanes(first, count, target, numbers);
@@ -130,8 +129,7 @@ PixelPass Pixel::TracePassWithFirstHits(const Camera& camera, int x, int y, int 
       AddSample(integrator.TraceFromLane(trees, root, shaft_, lanes, lane, sampler, stats), pass,
                 stats);
     }
-  }
-  return pass;
+  });
 }
 
 }  // namespace glint

@@ -47,12 +47,9 @@ MonteCarloIntegrator::MonteCarloIntegrator(const Scene& scene, MonteCarloOptions
 Colour MonteCarloIntegrator::TraceFromLane(RayTree& tree, std::uint32_t root,
                                            const PixelShaft& shaft, const RayLanes& lanes, int lane,
                                            Sampler& sampler, RenderStats& stats) const {
-  if (lanes.closest[static_cast<std::size_t>(lane)] < 0.0) {
-    return Trace(tree, root, shaft, sampler, stats);
-  }
+  // A pixel that is not roomOnly (FirstHitLanes): Trace's path, from the lanes' hit if known.
   Hit hit;
-  hitLanes_->FillHit(lanes, lane, hit);
-  return TraceNode(tree, root, root, sampler, stats, shaft, &hit);
+  return TraceNode(tree, root, root, sampler, stats, shaft, hitLanes_->Known(lanes, lane, hit));
 }
 
 void MonteCarloIntegrator::TraceLanes(RayLanes& lanes, int count, const PixelShaft& shaft,

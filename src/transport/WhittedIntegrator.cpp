@@ -15,14 +15,11 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth, FresnelMo
 }
 
 Colour WhittedIntegrator::TraceFromLane(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,
-                                        const RayLanes& lanes, int lane, Sampler& sampler,
+                                        const RayLanes& lanes, int lane, Sampler& /*sampler*/,
                                         RenderStats& stats) const {
-  if (lanes.closest[static_cast<std::size_t>(lane)] < 0.0) {
-    return Trace(tree, root, shaft, sampler, stats);
-  }
+  // Trace's path, from the lanes' hit if they found it.
   Hit hit;
-  hitLanes_->FillHit(lanes, lane, hit);
-  return TraceNode(tree, root, stats, shaft, &hit);
+  return TraceNode(tree, root, stats, shaft, hitLanes_->Known(lanes, lane, hit));
 }
 
 int WhittedIntegrator::LaneWidth(const PixelShaft& shaft) const {

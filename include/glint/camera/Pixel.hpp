@@ -119,10 +119,12 @@ class Pixel {
                                    const Integrator& integrator, Sampler& sampler, RayTree& trees,
                                    RenderStats& stats, bool keepTrees,
                                    const std::atomic<bool>* cancel) const;
-  // The number of rays of the group from `first` (at most RayLanes::kMax) that run before
-  // a cancel; clears pass.complete if one comes.
-  static int GroupBeforeCancel(const std::atomic<bool>* cancel, int first, int rays,
-                               PixelPass& pass);
+  // The two lane passes' loop: a pass of `rays` rays in groups of RayLanes::kMax from a
+  // cleared `trees`, traceGroup(first, count, pass) for each, until a cancel (which clears
+  // pass.complete and ends the group before the ray it falls on).
+  template <class TraceGroup>
+  static PixelPass TraceGroups(int rays, RayTree& trees, const std::atomic<bool>* cancel,
+                               TraceGroup traceGroup);
   // A camera ray's tree root: from the eye along unit `direction`, importance 1/N.
   static Ray CameraRay(vec3 eye, vec3 direction, double importance) {
     Ray ray;

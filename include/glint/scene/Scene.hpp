@@ -48,17 +48,17 @@ class Scene {
   // Closest hit along the ray. With `withAreaLight`, the light rectangle is part of the
   // scene and wins over the ceiling it lies in (spec: "a ray hits the light").
   bool Intersect(vec3 origin, vec3 direction, Hit& hit, bool withAreaLight) const;
-  // Intersect's two halves, for SIMD lanes that find the winner themselves
-  // (CameraHitLanes): what the ray met first (`index` into spheres or cubes, `face` a
-  // wall's side or a cube's face), at distance t, and the hit record made from it.
-  enum class Closest : std::int8_t { None, Wall, Sphere, Cube, Light };
-  bool FillClosest(Closest winner, int index, int face, double t, vec3 origin, vec3 direction,
-                   Hit& hit) const;
   // The same for a ray known to meet no object and not the light, and to leave the
   // room through wall `side` (PixelShaft): the same hit as Intersect's, found directly.
   void IntersectRoom(vec3 origin, vec3 direction, int side, Hit& hit) const {
     wall.FillHit(origin, direction, wall.DistanceThrough(origin, direction, side), side, hit);
   }
+  // Intersect's second half, for SIMD lanes that find the winner themselves
+  // (CameraHitLanes): what the ray met first (`index` into spheres or cubes, `face` a
+  // wall's side or a cube's face), at distance t, and the hit record made from it.
+  enum class Closest : std::int8_t { None, Wall, Sphere, Cube, Light };
+  bool FillClosest(Closest winner, int index, int face, double t, vec3 origin, vec3 direction,
+                   Hit& hit) const;
 
   // Whitted shadow ray from p toward q: blocked by opaque objects only, transparent
   // objects let it through (the design's rule). The room is convex, so no wall can

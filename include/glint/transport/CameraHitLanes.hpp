@@ -57,8 +57,8 @@ class CameraHitLanes {
   CameraHitLanes(const Scene& scene, const Pinhole& camera, bool withAreaLight, SimdTarget target);
 
   // Whether the lanes pay for a pass of `rays` rays of a pixel: from 4 lanes (AVX2 and
-  // AVX-512) and 8 rays. Measured (BENCHMARKS.md, "SIMD lanes"): the scalar lane and SSE4
-  // lose up to 5% in Monte Carlo mode, AVX-512 at Whitted's 4 rays 3.5%.
+  // AVX-512) and 8 rays. Measured (BENCHMARKS.md, "SIMD lanes"): in Monte Carlo mode the
+  // scalar lane loses 5% and SSE4 gains nothing; AVX-512 at Whitted's 4 rays loses 3.5%.
   bool Pays(int rays) const { return width_ >= 4 && rays >= 8; }
   // Lanes [0, count) from their px, py: direction, and t, closest, closestIndex and
   // closestFace (RayLanes).
@@ -66,6 +66,13 @@ class CameraHitLanes {
   // Lane i's hit record, as Scene::Intersect gives it for that ray; false if it met
   // nothing. The lane must have closest >= 0.
   bool FillHit(const RayLanes& lanes, int i, Hit& hit) const;
+  // Lane i's hit, filled into `storage`, or null for a lane handed back to
+  // Scene::Intersect (closest < 0): what the integrators' trace node takes as `known`.
+  const Hit* Known(const RayLanes& lanes, int i, Hit& storage) const {
+    if (lanes.closest[static_cast<std::size_t>(i)] < 0.0) return nullptr;
+    FillHit(lanes, i, storage);
+    return &storage;
+  }
 
  private:
   const Scene& scene_;

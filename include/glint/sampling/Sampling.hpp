@@ -3,6 +3,7 @@
 #pragma once
 
 #include "glint/core/Math.hpp"
+#include "glint/core/SinCos.hpp"
 
 namespace glint {
 
@@ -24,8 +25,8 @@ struct Frame {
 // Cosine-weighted hemisphere around +z (Malley's method): p(w) = cos(theta) / pi.
 inline vec3 SampleCosineHemisphere(double u1, double u2) {
   const double r = std::sqrt(u1);
-  const double phi = 2.0 * kPi * u2;
-  return {r * std::cos(phi), r * std::sin(phi), SafeSqrt(1.0 - u1)};
+  const SinCos phi = SinCosTurns(u2);  // the azimuth 2 pi u2
+  return {r * phi.cos, r * phi.sin, SafeSqrt(1.0 - u1)};
 }
 inline double CosineHemispherePdf(double cosTheta) {
   return cosTheta > 0.0 ? cosTheta * kInvPi : 0.0;
@@ -55,8 +56,8 @@ inline vec3 SamplePowerCosine(double n, double u1, double u2) {
   // 1 - u1 lies in (0, 1], so cos(alpha) > 0 and the power is finite for any n >= 0.
   const double cosAlpha = std::pow(1.0 - u1, 1.0 / (n + 1.0));
   const double sinAlpha = SafeSqrt(1.0 - cosAlpha * cosAlpha);
-  const double phi = 2.0 * kPi * u2;
-  return {sinAlpha * std::cos(phi), sinAlpha * std::sin(phi), cosAlpha};
+  const SinCos phi = SinCosTurns(u2);
+  return {sinAlpha * phi.cos, sinAlpha * phi.sin, cosAlpha};
 }
 inline double PowerCosinePdf(double n, double cosAlpha) {
   return cosAlpha > 0.0 ? (n + 1.0) / (2.0 * kPi) * CosinePower(cosAlpha, n) : 0.0;

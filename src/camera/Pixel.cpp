@@ -126,6 +126,7 @@ PixelPass Pixel::TracePassWithFirstHits(const Camera& camera, int x, int y, int 
           camera.Eye(), vec3(lanes.direction[0][j], lanes.direction[1][j], lanes.direction[2][j]),
           importance));
       ++stats.cameraRays;
+      if (lanes.closest[j] >= 0.0) ++stats.laneRays;  // its first hit from the lanes
       AddSample(integrator.TraceFromLane(trees, root, shaft_, lanes, lane, sampler, stats), pass,
                 stats);
     }

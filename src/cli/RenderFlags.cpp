@@ -150,10 +150,11 @@ void AddRenderOptions(CLI::App* render, RenderArgs& args, bool outputs) {
   render
       ->add_option(
           "--simd", args.simd,
-          "Whitted mode, and Monte Carlo with terminal walls: the instruction set "
-          "of the lanes that trace a pixel's camera rays in lock-step: 'auto' (the widest this CPU "
-          "runs), 'scalar' (the same code, one lane), 'sse4' (2 lanes), 'avx2' (4) or "
-          "'avx512' (8); every one gives the same image, bit for bit")
+          "The instruction set of the lanes that trace a pixel's camera rays in lock-step "
+          "(with terminal walls or in Whitted mode to their wall where the pixel holds only the "
+          "room, elsewhere to their first hit): 'auto' (the widest this CPU runs), 'scalar' (the "
+          "same code, one lane), 'sse4' (2 lanes), 'avx2' (4) or 'avx512' (8); every one gives "
+          "the same image, bit for bit")
       ->check(CLI::IsMember(kSimdTargets))
       ->capture_default_str();
   render->add_flag("-q,--quiet", args.quiet, "No progress bar and no summary line");

@@ -132,11 +132,6 @@ RenderSetup Prepare(const RenderArgs& args, bool checkOutputs) {
                        " (a caustic lights a wall only with --walls diffuse)");
     }
   }
-  if (args.mode == "mc" && args.walls == "diffuse" && args.simdGiven) {
-    throw InputError(
-        "--simd: means nothing with --walls diffuse (the SIMD lanes trace the camera rays "
-        "that end on terminal walls, so far)");
-  }
   const std::optional<SimdTarget> simd = ParseSimdTarget(args.simd);
   if (!simd)
     throw InputError("--simd " + args.simd + ": expected auto, scalar, sse4, avx2 or avx512");

@@ -258,8 +258,9 @@ CameraHitLanes::CameraHitLanes(const Scene& scene, const Pinhole& camera, bool w
     : scene_(scene),
       eye_(camera.Eye()),
       k_(ConstantsOf(scene, camera, withAreaLight)),
-      width_(SimdLanes(ResolveSimdTarget(target))),
-      kernel_(KernelForTarget<HitLaneKernel>(ResolveSimdTarget(target), HWY_CHOOSE_SSE4(FindHits),
+      target_(ResolveSimdTarget(target)),
+      width_(SimdLanes(target_)),
+      kernel_(KernelForTarget<HitLaneKernel>(target_, HWY_CHOOSE_SSE4(FindHits),
                                              HWY_CHOOSE_AVX2(FindHits), HWY_CHOOSE_AVX3(FindHits),
                                              &HWY_STATIC_DISPATCH(FindHitsOneLane))) {}
 

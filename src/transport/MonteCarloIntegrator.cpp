@@ -38,8 +38,10 @@ MonteCarloIntegrator::MonteCarloIntegrator(const Scene& scene, MonteCarloOptions
     if (!camera) throw std::invalid_argument("caustics by light tracing need the camera");
     tracer_.emplace(scene_, light_, options_, *camera, !useMirrored_);
   }
-  if (options_.walls == MonteCarloOptions::Walls::Terminal && camera) {
-    lanes_.emplace(scene_.wall, light_, *camera, options_.simd);
+  if (camera) {
+    if (options_.walls == MonteCarloOptions::Walls::Terminal) {
+      lanes_.emplace(scene_.wall, light_, *camera, options_.simd);
+    }
     hitLanes_.emplace(scene_, *camera, /*withAreaLight=*/true, options_.simd);
   }
 }

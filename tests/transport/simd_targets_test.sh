@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # simd_targets_test.sh GLINT SCENE: the image is the same, byte for byte, for every --simd
-# target this CPU runs (TerminalWallLanes, WhittedWallLanes) as for the scalar lane, in
+# target this CPU runs (TerminalWallLanes, WhittedWallLanes, CameraHitLanes) as for the scalar lane, in
 # both modes, for each sampler and each Monte Carlo switch the lanes meet, with 1 and 2
 # threads and over 2 MPI ranks; a target the CPU lacks is refused with a message that
 # names what it runs.
@@ -32,7 +32,9 @@ render() {  # render NAME ARGS...: the scene at 48x40, 11 rays per pixel (spare 
 for sampler in random stratified sobol; do
   for switches in "--mode whitted" "--mode whitted --fresnel small-angle" "--mode mc" \
                   "--mode mc --glass choose --fresnel small-angle" \
-                  "--mode mc --strategy light --branches 3" "--mode mc --strategy brdf"; do
+                  "--mode mc --strategy light --branches 3" "--mode mc --strategy brdf" \
+                  "--mode mc --walls diffuse" "--mode mc --walls diffuse --caustics light" \
+                  "--mode mc --walls diffuse --mirror-light brdf"; do
     read -ra s <<< "--sampler $sampler $switches"
     render scalar "${s[@]}" --simd scalar --threads 1
     for t in "${targets[@]}"; do

@@ -20,7 +20,8 @@ struct RenderStats {
   // pixel (their visibility tests count as shadow rays).
   std::uint64_t lightRays = 0;
   std::uint64_t splats = 0;
-  // Of cameraRays, those traced in lock-step SIMD lanes (Integrator::TraceLanes).
+  // Of cameraRays, those traced in lock-step SIMD lanes (Integrator::TraceLanes) or whose
+  // first hit the lanes found (Integrator::FindFirstHits).
   std::uint64_t laneRays = 0;
 
   // The counters in a fixed order, for a checkpoint's header or an MPI message.

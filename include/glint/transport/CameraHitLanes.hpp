@@ -1,5 +1,6 @@
-// The first hit of a pixel's camera rays in SIMD lanes, for the pixels whose rays may meet
-// an object (not PixelShaft::roomOnly): the camera direction and Scene::Intersect's
+// The first hit of a pixel's camera rays in SIMD lanes, for the pixels the integrator's
+// other lanes leave (with terminal walls those whose rays may meet an object, not
+// PixelShaft::roomOnly; with diffuse walls every pixel): the camera direction and Scene::Intersect's
 // closest-hit search (the room's exit, each sphere, each cube, the area light), lane by
 // lane with the scalar code's operations in its order, so that each ray's distance and
 // winner are the scalar ones to the bit. The integrator then shades each ray from that
@@ -60,6 +61,7 @@ class CameraHitLanes {
   // AVX-512) and 8 rays. Measured (BENCHMARKS.md, "SIMD lanes"): in Monte Carlo mode the
   // scalar lane loses 5% and SSE4 gains nothing; AVX-512 at Whitted's 4 rays loses 3.5%.
   bool Pays(int rays) const { return width_ >= 4 && rays >= 8; }
+  SimdTarget Target() const { return target_; }
   // Lanes [0, count) from their px, py: direction, and t, closest, closestIndex and
   // closestFace (RayLanes).
   void Trace(RayLanes& lanes, int count) const;
@@ -78,6 +80,7 @@ class CameraHitLanes {
   const Scene& scene_;
   vec3 eye_;
   HitLaneConstants k_;
+  SimdTarget target_;  // resolved
   int width_;
   HitLaneKernel kernel_;
 };

@@ -50,12 +50,16 @@ class MonteCarloIntegrator final : public Integrator {
   int LaneWidth(const PixelShaft& shaft) const override {
     return lanes_ && shaft.roomOnly ? lanes_->Width() : 0;
   }
-  SimdTarget LaneTarget() const override { return lanes_ ? lanes_->Target() : SimdTarget::Scalar; }
+  SimdTarget LaneTarget() const override {
+    if (lanes_) return lanes_->Target();
+    return hitLanes_ ? hitLanes_->Target() : SimdTarget::Scalar;
+  }
   void TraceLanes(RayLanes& lanes, int count, const PixelShaft& shaft,
                   RenderStats& stats) const override;
-  // The other pixels' camera rays find their first hit in lanes too (terminal walls).
+  // The camera rays that LaneWidth leaves find their first hit in lanes: with terminal
+  // walls the other pixels', with diffuse walls every pixel's.
   bool FirstHitLanes(const PixelShaft& shaft, int rays) const override {
-    return hitLanes_ && !shaft.roomOnly && hitLanes_->Pays(rays);
+    return hitLanes_ && LaneWidth(shaft) == 0 && hitLanes_->Pays(rays);
   }
   void FindFirstHits(RayLanes& lanes, int count) const override { hitLanes_->Trace(lanes, count); }
   Colour TraceFromLane(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,
@@ -146,7 +150,7 @@ class MonteCarloIntegrator final : public Integrator {
   bool useMirrored_;                   // diffuse walls, MirrorLight::Nee, and mirrors in the scene
   std::optional<LightTracer> tracer_;  // Caustics::Light
   std::optional<TerminalWallLanes> lanes_;  // Walls::Terminal, with the camera
-  std::optional<CameraHitLanes> hitLanes_;  // the same
+  std::optional<CameraHitLanes> hitLanes_;  // with the camera
 };
 
 // Inline: the walls' hits, most of a render, take this path.

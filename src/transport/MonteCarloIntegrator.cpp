@@ -109,7 +109,8 @@ int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, std::u
       const Sample2 uv = sampler.Get2D(SampleDimension::Scatter(node));
       const vec3 w = Frame::FromZ(n).ToWorld(SampleCosineHemisphere(uv.u, uv.v));
       // The light it may reach: counted by next-event estimation at this wall.
-      out[0] = {glm::normalize(w), m.reflectance, 0.0, RayKind::Diffuse, ray.inside, true};
+      out[0] =
+          Candidate::Of(glm::normalize(w), m.reflectance, 0.0, RayKind::Diffuse, ray.inside, true);
       return 1;
     }
     case MaterialType::Phong: {
@@ -119,8 +120,8 @@ int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, std::u
             sampler.Get2D(i == 0 ? SampleDimension::Scatter(node)
                                  : SampleDimension::Extra(node, static_cast<std::uint32_t>(i)));
         const PhongSample s = SamplePhong(m, d, n, uv.u, uv.v);
-        out[i] = {s.direction, s.weight / static_cast<double>(k), k * s.pdf, RayKind::Reflected,
-                  ray.inside};
+        out[i] = Candidate::Of(s.direction, s.weight / static_cast<double>(k), k * s.pdf,
+                               RayKind::Reflected, ray.inside);
       }
       return k;
     }
@@ -131,7 +132,7 @@ int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, std::u
       // The light it reaches after a diffuse ray: MirroredLight counted it at that ray's wall.
       const vec3 r = glm::normalize(Reflect(d, n));
       const bool counted = useMirrored_ && ray.kind == RayKind::Diffuse;
-      out[0] = {r, m.reflectance, 0.0, RayKind::Reflected, ray.inside, counted};
+      out[0] = Candidate::Of(r, m.reflectance, 0.0, RayKind::Reflected, ray.inside, counted);
       return 1;
     }
     case MaterialType::Glass: {
@@ -142,16 +143,19 @@ int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, std::u
       if (options_.glass == MonteCarloOptions::Glass::Choose) {
         // One child, reflection with probability F: weight F / F = (1 - F) / (1 - F) = 1.
         if (!refracted || sampler.Get1D(SampleDimension::Choice(node)) < f) {
-          out[0] = {mirror, Colour(1.0), 0.0, RayKind::Reflected, ray.inside};
+          out[0] = Candidate::Of(mirror, Colour(1.0), 0.0, RayKind::Reflected, ray.inside);
         } else {
-          out[0] = {*refracted, Colour(1.0), 0.0, RayKind::Refracted, !ray.inside};
+          out[0] = Candidate::Of(*refracted, Colour(1.0), 0.0, RayKind::Refracted, !ray.inside);
         }
         return 1;
       }
       int count = 0;
-      if (f > 0.0) out[count++] = {mirror, Colour(f), 0.0, RayKind::Reflected, ray.inside};
+      if (f > 0.0) {
+        out[count++] = Candidate::Of(mirror, Colour(f), 0.0, RayKind::Reflected, ray.inside);
+      }
       if (refracted && f < 1.0) {
-        out[count++] = {*refracted, Colour(1.0 - f), 0.0, RayKind::Refracted, !ray.inside};
+        out[count++] =
+            Candidate::Of(*refracted, Colour(1.0 - f), 0.0, RayKind::Refracted, !ray.inside);
       }
       return count;
     }

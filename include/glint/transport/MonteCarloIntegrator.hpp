@@ -112,14 +112,21 @@ class MonteCarloIntegrator final : public Integrator {
     return scene_.Occluded(OffsetRayOrigin(p, n, w), y);
   }
 
+  // No default member initializers, so that an array of them is left uninitialised: Scatter
+  // writes each candidate it returns whole (Of). Zeroing TraceNode's 64 took 6% of a
+  // render with diffuse walls (measured).
   struct Candidate {
     vec3 direction;
     Colour weight;
     double pdf;
     RayKind kind;
     bool inside;
-    bool lightCounted = false;  // Ray::lightCounted
-    double causticRatio = 0.0;  // Ray::causticRatio
+    bool lightCounted;    // Ray::lightCounted
+    double causticRatio;  // Ray::causticRatio
+    static Candidate Of(vec3 direction, Colour weight, double pdf, RayKind kind, bool inside,
+                        bool lightCounted = false) {
+      return {direction, weight, pdf, kind, inside, lightCounted, 0.0};
+    }
   };
 
   // The end of a ray that hit a terminal wall (`hit`, normal n facing the ray): its colour

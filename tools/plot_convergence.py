@@ -40,7 +40,11 @@ def panel(ax, rows, variants, metric, slope_key, label, power):
             cx, cy = np.log(t).mean(), np.log(e).mean()
             xs = np.linspace(np.log(t).min(), np.log(t).max(), 50)
             ax.plot(np.exp(xs), np.exp(cy + slope * (xs - cx)), "-", color=colour, lw=1.2)
-            band = [np.exp(cy + (slope + s * se) * (xs - cx)) for s in (-1, 1)]
+            # On a busy machine the slope's error can be huge (thousands): the band is
+            # kept within the data's decades, not sent to overflow (exp of 1e5).
+            floor, ceiling = np.log(e.min()) - 3.0, np.log(e.max()) + 3.0
+            band = [np.exp(np.clip(cy + (slope + s * se) * (xs - cx), floor, ceiling))
+                    for s in (-1, 1)]
             ax.fill_between(np.exp(xs), np.minimum(*band), np.maximum(*band), color=colour,
                             alpha=0.2, lw=0)
         if anchor is None:

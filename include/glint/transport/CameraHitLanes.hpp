@@ -1,12 +1,13 @@
 // The first hit of a pixel's camera rays in SIMD lanes, for the pixels the integrator's
 // other lanes leave (with terminal walls those whose rays may meet an object, not
-// PixelShaft::roomOnly; with diffuse walls every pixel): the camera direction and Scene::Intersect's
-// closest-hit search (the room's exit, each sphere, each cube, the area light), lane by
-// lane with the scalar code's operations in its order, so that each ray's distance and
-// winner are the scalar ones to the bit. The integrator then shades each ray from that
-// hit (Integrator::TraceFromLane). A lane whose ray takes one of the scalar code's rare
-// branches (a direction component exactly 0, a ray that does not enter through the
-// opening, a sphere's q = 0, a ray parallel to the light) is left to Scene::Intersect.
+// PixelShaft::roomOnly; with diffuse walls every pixel): the camera direction and
+// Scene::Intersect's closest-hit search (the room's exit, each sphere, each cube, the
+// area light), lane by lane with the scalar code's operations in its order, so that each
+// ray's distance and winner are the scalar ones to the bit. The integrator then shades
+// each ray from that hit (Integrator::TraceFromLane). A lane whose ray takes one of the
+// scalar code's rare branches (a direction component exactly 0, a ray that does not
+// enter through the opening, a sphere's q = 0, a ray parallel to the light) is left to
+// Scene::Intersect.
 #pragma once
 
 #include <array>

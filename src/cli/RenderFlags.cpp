@@ -166,7 +166,6 @@ void RecordMonteCarloSwitches(const CLI::App* command, RenderArgs& args) {
   for (const char* name : kMonteCarloSwitches) {
     if (command->count(name) > 0) args.monteCarloSwitches.emplace_back(name);
   }
-  args.simdGiven = command->count("--simd") > 0;
 }
 
 }  // namespace glint

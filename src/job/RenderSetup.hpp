@@ -37,7 +37,6 @@ struct RenderArgs {
   std::string caustics = "off";
   std::string sampler = "sobol";  // the equal-time study's winner (BENCHMARKS.md)
   std::string simd = "auto";      // the lanes' instruction set (SimdTarget)
-  bool simdGiven = false;         // --simd was on the command line
   // The Monte Carlo switches given on the command line (--walls, ...): with --mode
   // whitted they mean nothing, and Prepare refuses them.
   std::vector<std::string> monteCarloSwitches;

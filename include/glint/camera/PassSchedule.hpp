@@ -6,9 +6,9 @@
 // last pass's seconds per ray per pixel (its set-up included) and o the first pass's
 // seconds (all of a pass's set-up and more); the half leaves room for a pass that runs
 // slower than the one before (another process on the cores), so the last passes shrink
-// and the budget is not overspent. A few of the scheduler's time slices, kReserveSeconds, is kept
-// back from the time left as well: another process may take the core for that long in
-// the middle of a pass, however short the pass (measured: 0.5 s budgets overspent by
+// and the budget is not overspent. A few of the scheduler's time slices, kReserveSeconds,
+// are kept back from the time left as well: another process may take the core for that
+// long in the middle of a pass, however short the pass (measured: 0.5 s budgets overspent by
 // 1 ms in 2 of 6 runs of the test suite without it; with 4 ms, 0.24 ms once in a CI run
 // on 2 cores, where other tests' threads queue for both: 20 ms covers a few slices). At
 // most two one-ray passes' time and the reserve are left unused.

@@ -118,6 +118,24 @@ PixelPass Pixel::TracePassWithFirstHits(const Camera& camera, int x, int y, int 
       lanes.py[lane] = y + numbers[1][lane];
     }
     integrator.FindFirstHits(lanes, count);
+    if (!keepTrees && integrator.TracesGroupsFromLanes()) {
+      // The group's rays together, then their colours into the sum in ray order.
+      trees.Clear();
+      std::array<Colour, RayLanes::kMax> colours;
+      for (std::size_t j = 0; j < static_cast<std::size_t>(count); ++j) {
+        trees.Add(CameraRay(
+            camera.Eye(),
+            vec3(lanes.direction[0][j], lanes.direction[1][j], lanes.direction[2][j]),
+            importance));
+        ++stats.cameraRays;
+        if (lanes.closest[j] >= 0.0) ++stats.laneRays;
+      }
+      integrator.TraceGroupFromLanes(trees, 0, count, shaft_, lanes, stats, colours.data());
+      for (std::size_t j = 0; j < static_cast<std::size_t>(count); ++j) {
+        AddSample(colours[j], pass, stats);
+      }
+      return;
+    }
     for (int lane = 0; lane < count; ++lane) {
       const auto j = static_cast<std::size_t>(lane);
       if (!keepTrees) trees.Clear();

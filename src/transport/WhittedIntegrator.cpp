@@ -1,5 +1,7 @@
 #include "glint/transport/WhittedIntegrator.hpp"
 
+#include <algorithm>
+
 #include "glint/sampling/Sampling.hpp"
 #include "glint/transport/Fresnel.hpp"
 
@@ -11,6 +13,7 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth, FresnelMo
   if (camera && WhittedWallLanes::Serves(scene_.pointLights)) {
     lanes_.emplace(scene_.wall, scene_.pointLights, *camera, simd);
     hitLanes_.emplace(scene_, *camera, /*withAreaLight=*/false, simd);
+    secondaryLanes_.emplace(scene_, /*withAreaLight=*/false, simd);
   }
 }
 
@@ -146,43 +149,115 @@ std::uint32_t WhittedIntegrator::SpawnChildren(RayTree& tree, std::uint32_t inde
   return count;
 }
 
-Colour WhittedIntegrator::TraceNode(RayTree& tree, std::uint32_t index, RenderStats& stats,
-                                    PixelShaft shaft, const Hit* known) const {
-  const vec3 origin = tree[index].start;
-  const vec3 d = tree[index].direction;
-  Hit hit;
-  if (known != nullptr) {
-    hit = *known;
-  } else if (shaft.roomOnly) {
-    scene_.IntersectRoom(origin, d, shaft.side, hit);
+void WhittedIntegrator::FindHit(const RayTree& tree, std::uint32_t index, const PixelShaft& shaft,
+                                Hit& hit) const {
+  if (shaft.roomOnly) {
+    scene_.IntersectRoom(tree[index].start, tree[index].direction, shaft.side, hit);
   } else {
-    scene_.Intersect(origin, d, hit, /*withAreaLight=*/false);
+    scene_.Intersect(tree[index].start, tree[index].direction, hit, /*withAreaLight=*/false);
   }
+}
+
+std::uint32_t WhittedIntegrator::ShadeNode(RayTree& tree, std::uint32_t index, const Hit& hit,
+                                           Colour& local, RenderStats& stats,
+                                           const PixelShaft& shaft) const {
   if (!(hit.t < kInfinity)) {
     // Left the room through the open front: radiance 0.
     tree[index].final = true;
-    tree[index].end = origin;
+    tree[index].end = tree[index].start;
     tree[index].colour = Colour(0.0);
-    return Colour(0.0);
+    local = Colour(0.0);
+    return 0;
   }
   tree[index].end = hit.point;
   tree[index].object = hit.object;
-
-  Colour colour = LocalLight(hit, d, stats, shaft);
+  local = LocalLight(hit, tree[index].direction, stats, shaft);
   // Walls spawn nothing; the depth limit counts ray iterations, the camera ray being
   // the first.
   std::uint32_t count = 0;
   if (hit.material->type != MaterialType::Lambertian && tree[index].depth + 1 < maxDepth_) {
     count = SpawnChildren(tree, index, hit, stats);
   }
+  tree[index].final = count == 0;
+  tree[index].colour = local;
+  return count;
+}
+
+Colour WhittedIntegrator::TraceNode(RayTree& tree, std::uint32_t index, RenderStats& stats,
+                                    PixelShaft shaft, const Hit* known) const {
+  Hit hit;
+  if (known != nullptr) {
+    hit = *known;
+  } else {
+    FindHit(tree, index, shaft, hit);
+  }
+  Colour colour;
+  const std::uint32_t count = ShadeNode(tree, index, hit, colour, stats, shaft);
   const std::uint32_t first = tree[index].firstChild;
   for (std::uint32_t i = 0; i < count; ++i) {
     const Colour c = TraceNode(tree, first + i, stats);
     colour += tree[first + i].weight * c;  // C_R = L_local + sum W_i C_i
   }
-  tree[index].final = count == 0;
   tree[index].colour = colour;
   return colour;
+}
+
+void WhittedIntegrator::TraceGroupFromLanes(RayTree& trees, std::uint32_t firstRoot, int count,
+                                            const PixelShaft& shaft, const RayLanes& lanes,
+                                            RenderStats& stats, Colour* colours) const {
+  Colour local;
+  // The camera rays, from the first-hit lanes' hits (or Scene::Intersect's, where the
+  // lanes handed a ray back), with what the pixel's shaft knows.
+  for (int lane = 0; lane < count; ++lane) {
+    const std::uint32_t root = firstRoot + static_cast<std::uint32_t>(lane);
+    Hit hit;
+    if (hitLanes_->Known(lanes, lane, hit) == nullptr) FindHit(trees, root, shaft, hit);
+    ShadeNode(trees, root, hit, local, stats, shaft);
+  }
+  // Then a level at a time: the children a level makes are the next level, contiguous
+  // in the arena after it, and their hits are found W at a time.
+  RayLanes level;
+  auto begin = static_cast<std::uint32_t>(firstRoot + static_cast<std::uint32_t>(count));
+  while (begin < trees.Size()) {
+    const auto end = static_cast<std::uint32_t>(trees.Size());
+    for (std::uint32_t first = begin; first < end; first += RayLanes::kMax) {
+      const int n = static_cast<int>(std::min<std::uint32_t>(RayLanes::kMax, end - first));
+      for (std::size_t j = 0; j < static_cast<std::size_t>(n); ++j) {
+        const Ray& ray = trees[first + static_cast<std::uint32_t>(j)];
+        for (std::size_t a = 0; a < 3; ++a) {
+          level.start[a][j] = ray.start[static_cast<glm::length_t>(a)];
+          level.direction[a][j] = ray.direction[static_cast<glm::length_t>(a)];
+        }
+      }
+      secondaryLanes_->Trace(level, n);
+      for (int j = 0; j < n; ++j) {
+        const std::uint32_t index = first + static_cast<std::uint32_t>(j);
+        Hit hit;
+        if (level.closest[static_cast<std::size_t>(j)] < 0.0) {
+          FindHit(trees, index, PixelShaft{}, hit);
+        } else {
+          secondaryLanes_->FillHit(level, j, hit);
+        }
+        ShadeNode(trees, index, hit, local, stats, PixelShaft{});
+      }
+    }
+    begin = end;
+  }
+  // Colours bottom-up: children come after their parents in the arena, so a node's are
+  // final when it is reached from the end; C_R = L_local + sum W_i C_i in TraceNode's order.
+  for (auto i = static_cast<std::uint32_t>(trees.Size()); i-- > firstRoot;) {
+    Ray& ray = trees[i];
+    if (ray.childCount == 0) continue;
+    Colour colour = ray.colour;
+    for (std::uint32_t c = 0; c < ray.childCount; ++c) {
+      const Ray& child = trees[ray.firstChild + c];
+      colour += child.weight * child.colour;
+    }
+    ray.colour = colour;
+  }
+  for (int lane = 0; lane < count; ++lane) {
+    colours[lane] = trees[firstRoot + static_cast<std::uint32_t>(lane)].colour;
+  }
 }
 
 }  // namespace glint

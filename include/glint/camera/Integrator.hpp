@@ -55,6 +55,14 @@ class Integrator {
                                RenderStats& stats) const {
     return Trace(tree, root, shaft, sampler, stats);
   }
+  // A whole group of first-hit lanes at once, for an integrator that draws no numbers
+  // after the camera ray's (Whitted): tree[firstRoot + lane] is lane `lane`'s camera ray,
+  // for lanes [0, count); writes into colours[lane] what TraceFromLane would return for
+  // it, to the bit, building each ray's tree (the trees' nodes interleave in the arena).
+  virtual bool TracesGroupsFromLanes() const { return false; }
+  virtual void TraceGroupFromLanes(RayTree& /*trees*/, std::uint32_t /*firstRoot*/, int /*count*/,
+                                   const PixelShaft& /*shaft*/, const RayLanes& /*lanes*/,
+                                   RenderStats& /*stats*/, Colour* /*colours*/) const {}
 
   // The shadow rays it casts, for Camera::PrepareShafts.
   virtual PixelShaft::Lights ShadowLights() const = 0;

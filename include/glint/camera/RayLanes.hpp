@@ -30,6 +30,9 @@ struct RayLanes {
   // lanes leave the ray to Scene::Intersect (a rare case: a direction component 0, ...);
   // the sphere's or cube's index; the box face (IntersectSlabs' order) of the wall or cube.
   alignas(64) Lane t{}, closest{}, closestIndex{}, closestFace{};
+  // In, for HitLanes (rays from any origin): each ray's origin; its unit direction is in
+  // `direction`.
+  alignas(64) std::array<Lane, 3> start{};
 };
 
 }  // namespace glint

@@ -11,6 +11,7 @@
 #include "glint/scene/Scene.hpp"
 #include "glint/transport/CameraHitLanes.hpp"
 #include "glint/transport/Fresnel.hpp"
+#include "glint/transport/HitLanes.hpp"
 #include "glint/transport/WhittedWallLanes.hpp"
 
 namespace glint {
@@ -43,6 +44,12 @@ class WhittedIntegrator final : public Integrator {
   Colour TraceFromLane(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,
                        const RayLanes& lanes, int lane, Sampler& sampler,
                        RenderStats& stats) const override;
+  // And their trees breadth-first, a level at a time, each level's hits in lanes
+  // (HitLanes): the same trees and colours as TraceNode's depth-first recursion.
+  bool TracesGroupsFromLanes() const override { return secondaryLanes_.has_value(); }
+  void TraceGroupFromLanes(RayTree& trees, std::uint32_t firstRoot, int count,
+                           const PixelShaft& shaft, const RayLanes& lanes, RenderStats& stats,
+                           Colour* colours) const override;
 
   // The local term at a hit seen along direction d: for every visible point light of
   // intensity I at distance r and angle theta, with E = I cos(theta) / r^2,
@@ -58,6 +65,13 @@ class WhittedIntegrator final : public Integrator {
   // `known`: its hit, found already (CameraHitLanes; t infinite: it met nothing), or null.
   Colour TraceNode(RayTree& tree, std::uint32_t index, RenderStats& stats, PixelShaft shaft = {},
                    const Hit* known = nullptr) const;
+  // The hit of tree[index]'s ray, as TraceNode finds it without a known hit.
+  void FindHit(const RayTree& tree, std::uint32_t index, const PixelShaft& shaft, Hit& hit) const;
+  // What TraceNode does at tree[index] once its hit is known, but for its children's
+  // colours: its end, object and final flag, its local light into `local` (and, with no
+  // children, its colour), its children; returns how many it made.
+  std::uint32_t ShadeNode(RayTree& tree, std::uint32_t index, const Hit& hit, Colour& local,
+                          RenderStats& stats, const PixelShaft& shaft) const;
   // Creates the reflected and refracted children of tree[index] for its hit and
   // returns how many it made.
   std::uint32_t SpawnChildren(RayTree& tree, std::uint32_t index, const Hit& hit,
@@ -72,6 +86,7 @@ class WhittedIntegrator final : public Integrator {
   FresnelModel fresnel_;
   std::optional<WhittedWallLanes> lanes_;   // with the camera
   std::optional<CameraHitLanes> hitLanes_;  // the same
+  std::optional<HitLanes> secondaryLanes_;  // the same
 };
 
 }  // namespace glint

@@ -1,6 +1,7 @@
 #include "glint/transport/WhittedIntegrator.hpp"
 
 #include <algorithm>
+#include <array>
 
 #include "glint/sampling/Sampling.hpp"
 #include "glint/transport/Fresnel.hpp"
@@ -14,6 +15,7 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth, FresnelMo
     lanes_.emplace(scene_.wall, scene_.pointLights, *camera, simd);
     hitLanes_.emplace(scene_, *camera, /*withAreaLight=*/false, simd);
     secondaryLanes_.emplace(scene_, /*withAreaLight=*/false, simd);
+    wallLights_.emplace(scene_, simd);
   }
 }
 
@@ -217,6 +219,7 @@ void WhittedIntegrator::TraceGroupFromLanes(RayTree& trees, std::uint32_t firstR
   // Then a level at a time: the children a level makes are the next level, contiguous
   // in the arena after it, and their hits are found W at a time.
   RayLanes level;
+  WallLightLaneData walls;
   auto begin = static_cast<std::uint32_t>(firstRoot + static_cast<std::uint32_t>(count));
   while (begin < trees.Size()) {
     const auto end = static_cast<std::uint32_t>(trees.Size());
@@ -230,15 +233,48 @@ void WhittedIntegrator::TraceGroupFromLanes(RayTree& trees, std::uint32_t firstR
         }
       }
       secondaryLanes_->Trace(level, n);
+      std::array<Hit, RayLanes::kMax> hits;
+      std::array<int, RayLanes::kMax> wallLane{};  // its lane in `walls`, or -1
+      int wallCount = 0;
       for (int j = 0; j < n; ++j) {
+        const auto lane = static_cast<std::size_t>(j);
         const std::uint32_t index = first + static_cast<std::uint32_t>(j);
-        Hit hit;
-        if (level.closest[static_cast<std::size_t>(j)] < 0.0) {
+        Hit& hit = hits[lane];
+        if (level.closest[lane] < 0.0) {
           FindHit(trees, index, PixelShaft{}, hit);
         } else {
           secondaryLanes_->FillHit(level, j, hit);
         }
-        ShadeNode(trees, index, hit, local, stats, PixelShaft{});
+        wallLane[lane] = -1;
+        if (hit.t < kInfinity && WallLightLanes::Serves(*hit.material)) {
+          const auto k = static_cast<std::size_t>(wallCount);
+          const vec3 normal = FacingNormal(trees[index].direction, hit.normal);
+          const Colour diffuse = hit.material->reflectance * (hit.material->whittedDiffuse * kInvPi);
+          for (std::size_t a = 0; a < 3; ++a) {
+            const auto c = static_cast<glm::length_t>(a);
+            walls.point[a][k] = hit.point[c];
+            walls.normal[a][k] = normal[c];
+            walls.diffuse[a][k] = diffuse[c];
+          }
+          wallLane[lane] = wallCount++;
+        }
+      }
+      if (wallCount > 0) wallLights_->Shade(walls, wallCount);
+      for (int j = 0; j < n; ++j) {
+        const auto lane = static_cast<std::size_t>(j);
+        const std::uint32_t index = first + static_cast<std::uint32_t>(j);
+        if (wallLane[lane] < 0) {
+          ShadeNode(trees, index, hits[lane], local, stats, PixelShaft{});
+          continue;
+        }
+        // A wall: ShadeNode's record of it, with the lanes' local term; it spawns nothing.
+        const auto k = static_cast<std::size_t>(wallLane[lane]);
+        Ray& ray = trees[index];
+        ray.end = hits[lane].point;
+        ray.object = hits[lane].object;
+        ray.final = true;
+        ray.colour = Colour(walls.colour[0][k], walls.colour[1][k], walls.colour[2][k]);
+        stats.shadowRays += static_cast<std::uint64_t>(walls.shadowRays[k]);
       }
     }
     begin = end;

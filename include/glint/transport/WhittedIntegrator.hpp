@@ -12,6 +12,7 @@
 #include "glint/transport/CameraHitLanes.hpp"
 #include "glint/transport/Fresnel.hpp"
 #include "glint/transport/HitLanes.hpp"
+#include "glint/transport/WallLightLanes.hpp"
 #include "glint/transport/WhittedWallLanes.hpp"
 
 namespace glint {
@@ -87,6 +88,7 @@ class WhittedIntegrator final : public Integrator {
   std::optional<WhittedWallLanes> lanes_;   // with the camera
   std::optional<CameraHitLanes> hitLanes_;  // the same
   std::optional<HitLanes> secondaryLanes_;  // the same
+  std::optional<WallLightLanes> wallLights_;  // the same
 };
 
 }  // namespace glint

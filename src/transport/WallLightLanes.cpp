@@ -1,0 +1,195 @@
+// Highway compiles this file once per x86-64 target (foreach_target.h); the kernel below
+// is the same source for each, dispatched by WallLightLanes at run time.
+#include "glint/transport/WallLightLanes.hpp"
+
+#include <cstddef>
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "src/transport/WallLightLanes.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+HWY_BEFORE_NAMESPACE();
+namespace glint {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// Each line is the scalar code's operation in its order (the comments name the function),
+// so that every lane rounds as WhittedIntegrator::LocalLight does; -ffp-contract=off keeps
+// products and sums apart.
+template <class D>
+void ShadeWallLightLanesIn(D d, const WallLightLaneScene& k, WallLightLaneData& lanes,
+                           int count) {
+  using V = hn::Vec<D>;
+  using M = hn::Mask<D>;
+  const std::size_t w = hn::Lanes(d);
+  const V zero = hn::Zero(d);
+  const V one = hn::Set(d, 1.0);
+  const auto set = [d](double x) { return hn::Set(d, x); };
+  const auto dot = [](V ax, V ay, V az, V bx, V by, V bz) {  // glm::dot: (x + y) + z
+    return hn::Add(hn::Add(hn::Mul(ax, bx), hn::Mul(ay, by)), hn::Mul(az, bz));
+  };
+  for (std::size_t i = 0; i < static_cast<std::size_t>(count); i += w) {
+    V p[3];
+    V n[3];
+    for (std::size_t a = 0; a < 3; ++a) {
+      p[a] = hn::Load(d, lanes.point[a].data() + i);
+      n[a] = hn::Load(d, lanes.normal[a].data() + i);
+    }
+    // OffsetRayOrigin's distance, kOriginOffset (1 + max |p_a|).
+    const V offset = hn::Mul(
+        set(kOriginOffset),
+        hn::Add(one, hn::Max(hn::Max(hn::Abs(p[0]), hn::Abs(p[1])), hn::Abs(p[2]))));
+    V sum[3] = {zero, zero, zero};
+    V shadowRays = zero;
+    for (const WallLightLaneScene::LightTerms& light : k.lights) {
+      // l = position - p, r^2 = l.l, l /= sqrt(r^2), cos(theta) = n.l.
+      V l[3];
+      for (std::size_t a = 0; a < 3; ++a) l[a] = hn::Sub(set(light.position[a]), p[a]);
+      const V r2 = dot(l[0], l[1], l[2], l[0], l[1], l[2]);
+      const V r = hn::Sqrt(r2);
+      for (V& c : l) c = hn::Div(c, r);
+      const V cosTheta = dot(n[0], n[1], n[2], l[0], l[1], l[2]);
+      // The scalar test is `<= 0: skip`: a NaN passes it, and so it does here.
+      const M cast = hn::Not(hn::Le(cosTheta, zero));
+      shadowRays = hn::Add(shadowRays, hn::IfThenElseZero(cast, one));
+      // Reaches: from OffsetRayOrigin(p, n, l) to the light, v = q - origin.
+      const M along = hn::Ge(dot(l[0], l[1], l[2], n[0], n[1], n[2]), zero);
+      V o[3];
+      V v[3];
+      for (std::size_t a = 0; a < 3; ++a) {
+        const V step = hn::Mul(offset, n[a]);
+        o[a] = hn::IfThenElse(along, hn::Add(p[a], step), hn::Sub(p[a], step));
+        v[a] = hn::Sub(set(light.position[a]), o[a]);
+      }
+      const V va = dot(v[0], v[1], v[2], v[0], v[1], v[2]);  // a = v.v
+      M blocked = hn::Lt(one, zero);                          // none
+      // Sphere::IntersectsSegment, each opaque sphere.
+      for (const WallLightLaneScene::SphereTerms& s : k.spheres) {
+        V f[3];
+        for (std::size_t a = 0; a < 3; ++a) f[a] = hn::Sub(o[a], set(s.centre[a]));
+        const V b = dot(f[0], f[1], f[2], v[0], v[1], v[2]);
+        V q[3];
+        for (std::size_t a = 0; a < 3; ++a) q[a] = hn::Sub(hn::Mul(va, f[a]), hn::Mul(b, v[a]));
+        const V r2a = set(s.r2);
+        const V scaled = hn::Sub(hn::Mul(hn::Mul(r2a, va), va), dot(q[0], q[1], q[2], q[0], q[1], q[2]));
+        const M misses = hn::Or(hn::Lt(scaled, zero), hn::Eq(va, zero));
+        const V c = hn::Sub(dot(f[0], f[1], f[2], f[0], f[1], f[2]), r2a);
+        const V root = hn::Neg(hn::Add(b, hn::CopySign(hn::Sqrt(hn::Div(scaled, va)), b)));
+        const V s0 = hn::Div(root, va);
+        const V s1 = hn::Div(c, root);
+        const M inside0 = hn::And(hn::Gt(s0, zero), hn::Lt(s0, one));
+        const M inside1 = hn::And(hn::Gt(s1, zero), hn::Lt(s1, one));
+        const M hits = hn::AndNot(hn::Or(misses, hn::Eq(root, zero)), hn::Or(inside0, inside1));
+        blocked = hn::Or(blocked, hits);
+      }
+      // Cube::IntersectsSegment, each opaque cube: the bound, then IntersectSlabs along v.
+      for (const WallLightLaneScene::CubeTerms& c : k.cubes) {
+        V f[3];
+        for (std::size_t a = 0; a < 3; ++a) f[a] = hn::Sub(o[a], set(c.centre[a]));
+        const V b = dot(f[0], f[1], f[2], v[0], v[1], v[2]);
+        V q[3];
+        for (std::size_t a = 0; a < 3; ++a) q[a] = hn::Sub(hn::Mul(va, f[a]), hn::Mul(b, v[a]));
+        const M outsideBound = hn::Gt(dot(q[0], q[1], q[2], q[0], q[1], q[2]),
+                                      hn::Mul(hn::Mul(set(c.boundRadius2), va), va));
+        V tNear = set(-kInfinity);
+        V tFar = set(kInfinity);
+        M missesSlab = hn::Lt(one, zero);  // none
+        for (std::size_t a = 0; a < 3; ++a) {
+          const V lo = set(c.low[a]);
+          const V hi = set(c.high[a]);
+          // Parallel to the slab: inside it for all s, or never.
+          const M parallel = hn::Eq(v[a], zero);
+          missesSlab = hn::Or(missesSlab, hn::And(parallel, hn::Or(hn::Lt(o[a], lo), hn::Gt(o[a], hi))));
+          const V t0 = hn::Div(hn::Sub(lo, o[a]), v[a]);
+          const V t1 = hn::Div(hn::Sub(hi, o[a]), v[a]);
+          const M backward = hn::Lt(v[a], zero);
+          const V enter = hn::IfThenElse(backward, t1, t0);
+          const V leave = hn::IfThenElse(backward, t0, t1);
+          tNear = hn::IfThenElse(hn::AndNot(parallel, hn::Gt(enter, tNear)), enter, tNear);
+          tFar = hn::IfThenElse(hn::AndNot(parallel, hn::Lt(leave, tFar)), leave, tFar);
+        }
+        const M nearInside = hn::And(hn::Gt(tNear, zero), hn::Lt(tNear, one));
+        const M farInside = hn::And(hn::Gt(tFar, zero), hn::Lt(tFar, one));
+        const M hits = hn::AndNot(hn::Or(outsideBound, missesSlab),
+                                  hn::And(hn::Le(tNear, tFar), hn::Or(nearInside, farInside)));
+        blocked = hn::Or(blocked, hits);
+      }
+      // E = I (cos(theta) / r^2), the term (rho kd / pi) E, for a lane that casts and is not blocked.
+      const M lit = hn::AndNot(blocked, cast);
+      const V e = hn::Div(cosTheta, r2);
+      for (std::size_t c = 0; c < 3; ++c) {
+        const V term = hn::Mul(hn::Load(d, lanes.diffuse[c].data() + i),
+                               hn::Mul(set(light.intensity[c]), e));
+        sum[c] = hn::IfThenElse(lit, hn::Add(sum[c], term), sum[c]);
+      }
+    }
+    for (std::size_t c = 0; c < 3; ++c) hn::Store(sum[c], d, lanes.colour[c].data() + i);
+    hn::Store(shadowRays, d, lanes.shadowRays.data() + i);
+  }
+}
+
+// The target's full width, and one lane (the scalar path: the same code).
+void ShadeWallLightLanes(const WallLightLaneScene& k, WallLightLaneData& lanes, int count) {
+  ShadeWallLightLanesIn(hn::ScalableTag<double>(), k, lanes, count);
+}
+void ShadeWallLightLane(const WallLightLaneScene& k, WallLightLaneData& lanes, int count) {
+  ShadeWallLightLanesIn(hn::CappedTag<double, 1>(), k, lanes, count);
+}
+
+// NOLINTNEXTLINE(google-readability-namespace-comments)
+}  // namespace HWY_NAMESPACE
+}  // namespace glint
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace glint {
+
+namespace {
+
+std::array<double, 3> Components(vec3 v) {
+  return {v.x, v.y, v.z};
+}
+
+WallLightLaneScene TermsOf(const Scene& scene) {
+  WallLightLaneScene k;
+  for (const PointLight& light : scene.pointLights) {
+    k.lights.push_back({Components(light.position), Components(light.intensity)});
+  }
+  for (const Sphere& s : scene.spheres) {
+    if (s.GetMaterial().IsTransparent()) continue;  // shadow rays pass through glass
+    k.spheres.push_back({Components(s.Centre()), s.Radius() * s.Radius()});
+  }
+  for (const Cube& c : scene.cubes) {
+    if (c.GetMaterial().IsTransparent()) continue;
+    k.cubes.push_back({Components(c.Centre()), Components(c.Position()),
+                       Components(c.MaxCorner()), c.BoundRadius2()});
+  }
+  return k;
+}
+
+}  // namespace
+
+WallLightLanes::WallLightLanes(const Scene& scene, SimdTarget target)
+    : k_(TermsOf(scene)),
+      width_(SimdLanes(ResolveSimdTarget(target))),
+      kernel_(KernelForTarget<WallLightKernel>(
+          ResolveSimdTarget(target), HWY_CHOOSE_SSE4(ShadeWallLightLanes),
+          HWY_CHOOSE_AVX2(ShadeWallLightLanes), HWY_CHOOSE_AVX3(ShadeWallLightLanes),
+          &HWY_STATIC_DISPATCH(ShadeWallLightLane))) {}
+
+void WallLightLanes::Shade(WallLightLaneData& lanes, int count) const {
+  const int padded = (count + width_ - 1) / width_ * width_;
+  for (int i = count; i < padded; ++i) {  // spare lanes: lane 0's hit, results ignored
+    const auto j = static_cast<std::size_t>(i);
+    for (std::size_t a = 0; a < 3; ++a) {
+      lanes.point[a][j] = lanes.point[a][0];
+      lanes.normal[a][j] = lanes.normal[a][0];
+      lanes.diffuse[a][j] = lanes.diffuse[a][0];
+    }
+  }
+  kernel_(k_, lanes, padded);
+}
+
+}  // namespace glint
+#endif  // HWY_ONCE

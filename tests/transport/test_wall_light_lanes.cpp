@@ -1,0 +1,100 @@
+// WallLightLanes: the Whitted local term at wall hits found in SIMD lanes is
+// WhittedIntegrator::LocalLight's, to the bit, with as many shadow rays, on every target
+// this CPU runs, for walls hit from random points of the room: lit, in the opaque
+// objects' shadows (the spheres' and the cube's), behind a light, and at the room's edges.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "glint/core/SimdTarget.hpp"
+#include "glint/sampling/Rng.hpp"
+#include "glint/transport/WallLightLanes.hpp"
+#include "glint/transport/WhittedIntegrator.hpp"
+#include "support/LaneTesting.hpp"
+#include "support/TestScenes.hpp"
+
+namespace glint {
+namespace {
+
+using testing::SameBits;
+
+struct Counts {
+  int compared = 0;
+  int shadowed = 0;  // a light blocked by an object
+  int dark = 0;      // no light reaches the hit
+};
+
+Counts CompareWithScalar(const Scene& scene, SimdTarget target, int groups) {
+  const WhittedIntegrator whitted(scene, 10);
+  // The same room without its objects: a hit whose term differs there is in a shadow.
+  Scene open = scene;
+  open.spheres.clear();
+  open.cubes.clear();
+  const WhittedIntegrator unshadowed(open, 10);
+  const WallLightLanes lanes(scene, target);
+  Pcg32 rng(5, 17);
+  Counts n;
+  WallLightLaneData data;
+  for (int g = 0; g < groups; ++g) {
+    const int count = 1 + g % RayLanes::kMax;
+    std::vector<Colour> expected;
+    std::vector<std::uint64_t> rays;
+    for (int i = 0; i < count;) {
+      const vec3 lo = scene.wall.Position();
+      const vec3 o = lo + vec3(rng.Uniform(), rng.Uniform(), rng.Uniform()) *
+                              (scene.wall.MaxCorner() - lo);
+      const double z = 2.0 * rng.Uniform() - 1.0;
+      const double phi = 2.0 * kPi * rng.Uniform();
+      const double s = std::sqrt(1.0 - z * z);
+      const vec3 d(s * std::cos(phi), s * std::sin(phi), z);
+      Hit hit;
+      if (!scene.Intersect(o, d, hit, false) || !WallLightLanes::Serves(*hit.material)) continue;
+      RenderStats stats;
+      expected.push_back(whitted.LocalLight(hit, d, stats));
+      rays.push_back(stats.shadowRays);
+      n.shadowed += !(unshadowed.LocalLight(hit, d, stats) == expected.back());
+      const vec3 normal = FacingNormal(d, hit.normal);
+      const Colour diffuse = hit.material->reflectance * (hit.material->whittedDiffuse * kInvPi);
+      const auto j = static_cast<std::size_t>(i);
+      for (std::size_t a = 0; a < 3; ++a) {
+        const auto c = static_cast<glm::length_t>(a);
+        data.point[a][j] = hit.point[c];
+        data.normal[a][j] = normal[c];
+        data.diffuse[a][j] = diffuse[c];
+      }
+      ++i;
+    }
+    lanes.Shade(data, count);
+    for (std::size_t j = 0; j < static_cast<std::size_t>(count); ++j) {
+      const Colour got(data.colour[0][j], data.colour[1][j], data.colour[2][j]);
+      EXPECT_TRUE(SameBits(got, expected[j]))
+          << "point " << data.point[0][j] << " " << data.point[1][j] << " " << data.point[2][j];
+      EXPECT_EQ(static_cast<std::uint64_t>(data.shadowRays[j]), rays[j]);
+      ++n.compared;
+      n.dark += got == Colour(0.0);
+    }
+  }
+  return n;
+}
+
+TEST(WallLightLanes, EveryTargetShadesScalarWallsBitForBit) {
+  const std::vector<Scene> scenes = {
+      testing::CanonicalScene(), LoadScene(testing::SourcePath("scenes/cornell-mirror.json")),
+      // The spheres against the walls: shadow rays that graze them.
+      testing::CanonicalScene(
+          {"/objects/0/center=[0.2,0.2,0.2]", "/objects/1/center=[0.8,0.5,0.3]"})};
+  for (const Scene& scene : scenes) {
+    for (const SimdTarget target : SupportedSimdTargets()) {
+      SCOPED_TRACE(SimdTargetName(target));
+      const Counts n = CompareWithScalar(scene, target, 3000);
+      EXPECT_GT(n.shadowed, n.compared / 50);  // the objects' shadows were met
+      EXPECT_GT(n.dark, 0);                    // some hits see no light
+      EXPECT_LT(n.dark, n.compared / 2);       // most see one
+    }
+  }
+}
+
+}  // namespace
+}  // namespace glint

@@ -204,22 +204,66 @@ Colour WhittedIntegrator::TraceNode(RayTree& tree, std::uint32_t index, RenderSt
   return colour;
 }
 
+void WhittedIntegrator::ShadeBatch(RayTree& trees, std::uint32_t first, int n, const Hit* hits,
+                                   const PixelShaft& shaft, WallLightLaneData& walls,
+                                   RenderStats& stats) const {
+  // The walls among them in lanes, where every light's shadow ray is cast (the shaft
+  // knows no light visible); the rest, and the children, as TraceNode shades them.
+  const bool wallsInLanes = shaft.pointLightsVisible == 0;
+  std::array<int, RayLanes::kMax> wallLane{};  // its lane in `walls`, or -1
+  int wallCount = 0;
+  for (int j = 0; j < n; ++j) {
+    const auto lane = static_cast<std::size_t>(j);
+    const Hit& hit = hits[lane];
+    wallLane[lane] = -1;
+    if (!wallsInLanes || !(hit.t < kInfinity) || !WallLightLanes::Serves(*hit.material)) continue;
+    const auto k = static_cast<std::size_t>(wallCount);
+    const vec3 normal = FacingNormal(trees[first + static_cast<std::uint32_t>(j)].direction, hit.normal);
+    const Colour diffuse = hit.material->reflectance * (hit.material->whittedDiffuse * kInvPi);
+    for (std::size_t a = 0; a < 3; ++a) {
+      const auto c = static_cast<glm::length_t>(a);
+      walls.point[a][k] = hit.point[c];
+      walls.normal[a][k] = normal[c];
+      walls.diffuse[a][k] = diffuse[c];
+    }
+    wallLane[lane] = wallCount++;
+  }
+  if (wallCount > 0) wallLights_->Shade(walls, wallCount);
+  Colour local;
+  for (int j = 0; j < n; ++j) {
+    const auto lane = static_cast<std::size_t>(j);
+    const std::uint32_t index = first + static_cast<std::uint32_t>(j);
+    if (wallLane[lane] < 0) {
+      ShadeNode(trees, index, hits[lane], local, stats, shaft);
+      continue;
+    }
+    // A wall: ShadeNode's record of it, with the lanes' local term; it spawns nothing.
+    const auto k = static_cast<std::size_t>(wallLane[lane]);
+    Ray& ray = trees[index];
+    ray.end = hits[lane].point;
+    ray.object = hits[lane].object;
+    ray.final = true;
+    ray.colour = Colour(walls.colour[0][k], walls.colour[1][k], walls.colour[2][k]);
+    stats.shadowRays += static_cast<std::uint64_t>(walls.shadowRays[k]);
+  }
+}
+
 void WhittedIntegrator::TraceGroupFromLanes(RayTree& trees, std::uint32_t firstRoot, int count,
                                             const PixelShaft& shaft, const RayLanes& lanes,
                                             RenderStats& stats, Colour* colours) const {
-  Colour local;
+  std::array<Hit, RayLanes::kMax> hits;
+  WallLightLaneData walls;
   // The camera rays, from the first-hit lanes' hits (or Scene::Intersect's, where the
   // lanes handed a ray back), with what the pixel's shaft knows.
   for (int lane = 0; lane < count; ++lane) {
     const std::uint32_t root = firstRoot + static_cast<std::uint32_t>(lane);
-    Hit hit;
+    Hit& hit = hits[static_cast<std::size_t>(lane)];
     if (hitLanes_->Known(lanes, lane, hit) == nullptr) FindHit(trees, root, shaft, hit);
-    ShadeNode(trees, root, hit, local, stats, shaft);
   }
+  ShadeBatch(trees, firstRoot, count, hits.data(), shaft, walls, stats);
   // Then a level at a time: the children a level makes are the next level, contiguous
   // in the arena after it, and their hits are found W at a time.
   RayLanes level;
-  WallLightLaneData walls;
   auto begin = static_cast<std::uint32_t>(firstRoot + static_cast<std::uint32_t>(count));
   while (begin < trees.Size()) {
     const auto end = static_cast<std::uint32_t>(trees.Size());
@@ -233,49 +277,15 @@ void WhittedIntegrator::TraceGroupFromLanes(RayTree& trees, std::uint32_t firstR
         }
       }
       secondaryLanes_->Trace(level, n);
-      std::array<Hit, RayLanes::kMax> hits;
-      std::array<int, RayLanes::kMax> wallLane{};  // its lane in `walls`, or -1
-      int wallCount = 0;
       for (int j = 0; j < n; ++j) {
         const auto lane = static_cast<std::size_t>(j);
-        const std::uint32_t index = first + static_cast<std::uint32_t>(j);
-        Hit& hit = hits[lane];
         if (level.closest[lane] < 0.0) {
-          FindHit(trees, index, PixelShaft{}, hit);
+          FindHit(trees, first + static_cast<std::uint32_t>(j), PixelShaft{}, hits[lane]);
         } else {
-          secondaryLanes_->FillHit(level, j, hit);
-        }
-        wallLane[lane] = -1;
-        if (hit.t < kInfinity && WallLightLanes::Serves(*hit.material)) {
-          const auto k = static_cast<std::size_t>(wallCount);
-          const vec3 normal = FacingNormal(trees[index].direction, hit.normal);
-          const Colour diffuse = hit.material->reflectance * (hit.material->whittedDiffuse * kInvPi);
-          for (std::size_t a = 0; a < 3; ++a) {
-            const auto c = static_cast<glm::length_t>(a);
-            walls.point[a][k] = hit.point[c];
-            walls.normal[a][k] = normal[c];
-            walls.diffuse[a][k] = diffuse[c];
-          }
-          wallLane[lane] = wallCount++;
+          secondaryLanes_->FillHit(level, j, hits[lane]);
         }
       }
-      if (wallCount > 0) wallLights_->Shade(walls, wallCount);
-      for (int j = 0; j < n; ++j) {
-        const auto lane = static_cast<std::size_t>(j);
-        const std::uint32_t index = first + static_cast<std::uint32_t>(j);
-        if (wallLane[lane] < 0) {
-          ShadeNode(trees, index, hits[lane], local, stats, PixelShaft{});
-          continue;
-        }
-        // A wall: ShadeNode's record of it, with the lanes' local term; it spawns nothing.
-        const auto k = static_cast<std::size_t>(wallLane[lane]);
-        Ray& ray = trees[index];
-        ray.end = hits[lane].point;
-        ray.object = hits[lane].object;
-        ray.final = true;
-        ray.colour = Colour(walls.colour[0][k], walls.colour[1][k], walls.colour[2][k]);
-        stats.shadowRays += static_cast<std::uint64_t>(walls.shadowRays[k]);
-      }
+      ShadeBatch(trees, first, n, hits.data(), PixelShaft{}, walls, stats);
     }
     begin = end;
   }

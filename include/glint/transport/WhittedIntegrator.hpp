@@ -73,6 +73,10 @@ class WhittedIntegrator final : public Integrator {
   // children, its colour), its children; returns how many it made.
   std::uint32_t ShadeNode(RayTree& tree, std::uint32_t index, const Hit& hit, Colour& local,
                           RenderStats& stats, const PixelShaft& shaft) const;
+  // Shades tree[first, first + n), whose hits are hits[0, n), as ShadeNode does, the wall
+  // hits among them in lanes (WallLightLanes), using `walls` as their lanes' storage.
+  void ShadeBatch(RayTree& trees, std::uint32_t first, int n, const Hit* hits,
+                  const PixelShaft& shaft, WallLightLaneData& walls, RenderStats& stats) const;
   // Creates the reflected and refracted children of tree[index] for its hit and
   // returns how many it made.
   std::uint32_t SpawnChildren(RayTree& tree, std::uint32_t index, const Hit& hit,

@@ -15,7 +15,7 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth, FresnelMo
     lanes_.emplace(scene_.wall, scene_.pointLights, *camera, simd);
     hitLanes_.emplace(scene_, *camera, /*withAreaLight=*/false, simd);
     secondaryLanes_.emplace(scene_, /*withAreaLight=*/false, simd);
-    wallLights_.emplace(scene_, simd);
+    localLights_.emplace(scene_, simd);
   }
 }
 
@@ -162,7 +162,8 @@ void WhittedIntegrator::FindHit(const RayTree& tree, std::uint32_t index, const 
 
 std::uint32_t WhittedIntegrator::ShadeNode(RayTree& tree, std::uint32_t index, const Hit& hit,
                                            Colour& local, RenderStats& stats,
-                                           const PixelShaft& shaft) const {
+                                           const PixelShaft& shaft,
+                                           const Colour* knownLocal) const {
   if (!(hit.t < kInfinity)) {
     // Left the room through the open front: radiance 0.
     tree[index].final = true;
@@ -173,7 +174,7 @@ std::uint32_t WhittedIntegrator::ShadeNode(RayTree& tree, std::uint32_t index, c
   }
   tree[index].end = hit.point;
   tree[index].object = hit.object;
-  local = LocalLight(hit, tree[index].direction, stats, shaft);
+  local = knownLocal != nullptr ? *knownLocal : LocalLight(hit, tree[index].direction, stats, shaft);
   // Walls spawn nothing; the depth limit counts ray iterations, the camera ray being
   // the first.
   std::uint32_t count = 0;
@@ -205,46 +206,43 @@ Colour WhittedIntegrator::TraceNode(RayTree& tree, std::uint32_t index, RenderSt
 }
 
 void WhittedIntegrator::ShadeBatch(RayTree& trees, std::uint32_t first, int n, const Hit* hits,
-                                   const PixelShaft& shaft, WallLightLaneData& walls,
+                                   const PixelShaft& shaft, LocalLightLaneData& lights,
                                    RenderStats& stats) const {
-  // The walls among them in lanes, where every light's shadow ray is cast (the shaft
-  // knows no light visible); the rest, and the children, as TraceNode shades them.
-  const bool wallsInLanes = shaft.pointLightsVisible == 0;
-  std::array<int, RayLanes::kMax> wallLane{};  // its lane in `walls`, or -1
-  int wallCount = 0;
+  // The local terms in lanes, where every light's shadow ray is cast (the shaft knows no
+  // light visible) and the material's lobe is one the lanes raise by squaring.
+  const bool inLanes = shaft.pointLightsVisible == 0;
+  std::array<int, RayLanes::kMax> laneOf{};  // its lane in `lights`, or -1
+  int inLaneCount = 0;
   for (int j = 0; j < n; ++j) {
     const auto lane = static_cast<std::size_t>(j);
     const Hit& hit = hits[lane];
-    wallLane[lane] = -1;
-    if (!wallsInLanes || !(hit.t < kInfinity) || !WallLightLanes::Serves(*hit.material)) continue;
-    const auto k = static_cast<std::size_t>(wallCount);
-    const vec3 normal = FacingNormal(trees[first + static_cast<std::uint32_t>(j)].direction, hit.normal);
-    const Colour diffuse = hit.material->reflectance * (hit.material->whittedDiffuse * kInvPi);
+    laneOf[lane] = -1;
+    if (!inLanes || !(hit.t < kInfinity) || !LocalLightLanes::Serves(*hit.material)) continue;
+    const auto k = static_cast<std::size_t>(inLaneCount);
+    const vec3 d = trees[first + static_cast<std::uint32_t>(j)].direction;
+    const vec3 normal = FacingNormal(d, hit.normal);
     for (std::size_t a = 0; a < 3; ++a) {
       const auto c = static_cast<glm::length_t>(a);
-      walls.point[a][k] = hit.point[c];
-      walls.normal[a][k] = normal[c];
-      walls.diffuse[a][k] = diffuse[c];
+      lights.point[a][k] = hit.point[c];
+      lights.normal[a][k] = normal[c];
+      lights.direction[a][k] = d[c];
     }
-    wallLane[lane] = wallCount++;
+    LocalLightLanes::SetMaterial(lights, k, *hit.material);
+    laneOf[lane] = inLaneCount++;
   }
-  if (wallCount > 0) wallLights_->Shade(walls, wallCount);
+  if (inLaneCount > 0) localLights_->Shade(lights, inLaneCount);
   Colour local;
   for (int j = 0; j < n; ++j) {
     const auto lane = static_cast<std::size_t>(j);
     const std::uint32_t index = first + static_cast<std::uint32_t>(j);
-    if (wallLane[lane] < 0) {
+    if (laneOf[lane] < 0) {
       ShadeNode(trees, index, hits[lane], local, stats, shaft);
       continue;
     }
-    // A wall: ShadeNode's record of it, with the lanes' local term; it spawns nothing.
-    const auto k = static_cast<std::size_t>(wallLane[lane]);
-    Ray& ray = trees[index];
-    ray.end = hits[lane].point;
-    ray.object = hits[lane].object;
-    ray.final = true;
-    ray.colour = Colour(walls.colour[0][k], walls.colour[1][k], walls.colour[2][k]);
-    stats.shadowRays += static_cast<std::uint64_t>(walls.shadowRays[k]);
+    const auto k = static_cast<std::size_t>(laneOf[lane]);
+    const Colour known(lights.colour[0][k], lights.colour[1][k], lights.colour[2][k]);
+    stats.shadowRays += static_cast<std::uint64_t>(lights.shadowRays[k]);
+    ShadeNode(trees, index, hits[lane], local, stats, shaft, &known);
   }
 }
 
@@ -252,7 +250,7 @@ void WhittedIntegrator::TraceGroupFromLanes(RayTree& trees, std::uint32_t firstR
                                             const PixelShaft& shaft, const RayLanes& lanes,
                                             RenderStats& stats, Colour* colours) const {
   std::array<Hit, RayLanes::kMax> hits;
-  WallLightLaneData walls;
+  LocalLightLaneData lights;
   // The camera rays, from the first-hit lanes' hits (or Scene::Intersect's, where the
   // lanes handed a ray back), with what the pixel's shaft knows.
   for (int lane = 0; lane < count; ++lane) {
@@ -260,7 +258,7 @@ void WhittedIntegrator::TraceGroupFromLanes(RayTree& trees, std::uint32_t firstR
     Hit& hit = hits[static_cast<std::size_t>(lane)];
     if (hitLanes_->Known(lanes, lane, hit) == nullptr) FindHit(trees, root, shaft, hit);
   }
-  ShadeBatch(trees, firstRoot, count, hits.data(), shaft, walls, stats);
+  ShadeBatch(trees, firstRoot, count, hits.data(), shaft, lights, stats);
   // Then a level at a time: the children a level makes are the next level, contiguous
   // in the arena after it, and their hits are found W at a time.
   RayLanes level;
@@ -285,7 +283,7 @@ void WhittedIntegrator::TraceGroupFromLanes(RayTree& trees, std::uint32_t firstR
           secondaryLanes_->FillHit(level, j, hits[lane]);
         }
       }
-      ShadeBatch(trees, first, n, hits.data(), PixelShaft{}, walls, stats);
+      ShadeBatch(trees, first, n, hits.data(), PixelShaft{}, lights, stats);
     }
     begin = end;
   }

@@ -12,7 +12,7 @@
 #include "glint/transport/CameraHitLanes.hpp"
 #include "glint/transport/Fresnel.hpp"
 #include "glint/transport/HitLanes.hpp"
-#include "glint/transport/WallLightLanes.hpp"
+#include "glint/transport/LocalLightLanes.hpp"
 #include "glint/transport/WhittedWallLanes.hpp"
 
 namespace glint {
@@ -70,13 +70,15 @@ class WhittedIntegrator final : public Integrator {
   void FindHit(const RayTree& tree, std::uint32_t index, const PixelShaft& shaft, Hit& hit) const;
   // What TraceNode does at tree[index] once its hit is known, but for its children's
   // colours: its end, object and final flag, its local light into `local` (and, with no
-  // children, its colour), its children; returns how many it made.
+  // children, its colour), its children; returns how many it made. `knownLocal`: its
+  // local light, found already (LocalLightLanes), or null.
   std::uint32_t ShadeNode(RayTree& tree, std::uint32_t index, const Hit& hit, Colour& local,
-                          RenderStats& stats, const PixelShaft& shaft) const;
-  // Shades tree[first, first + n), whose hits are hits[0, n), as ShadeNode does, the wall
-  // hits among them in lanes (WallLightLanes), using `walls` as their lanes' storage.
+                          RenderStats& stats, const PixelShaft& shaft,
+                          const Colour* knownLocal = nullptr) const;
+  // Shades tree[first, first + n), whose hits are hits[0, n), as ShadeNode does, their
+  // local terms in lanes (LocalLightLanes), using `lights` as the lanes' storage.
   void ShadeBatch(RayTree& trees, std::uint32_t first, int n, const Hit* hits,
-                  const PixelShaft& shaft, WallLightLaneData& walls, RenderStats& stats) const;
+                  const PixelShaft& shaft, LocalLightLaneData& lights, RenderStats& stats) const;
   // Creates the reflected and refracted children of tree[index] for its hit and
   // returns how many it made.
   std::uint32_t SpawnChildren(RayTree& tree, std::uint32_t index, const Hit& hit,
@@ -92,7 +94,7 @@ class WhittedIntegrator final : public Integrator {
   std::optional<WhittedWallLanes> lanes_;   // with the camera
   std::optional<CameraHitLanes> hitLanes_;  // the same
   std::optional<HitLanes> secondaryLanes_;  // the same
-  std::optional<WallLightLanes> wallLights_;  // the same
+  std::optional<LocalLightLanes> localLights_;  // the same
 };
 
 }  // namespace glint

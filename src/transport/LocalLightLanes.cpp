@@ -1,11 +1,12 @@
 // Highway compiles this file once per x86-64 target (foreach_target.h); the kernel below
-// is the same source for each, dispatched by WallLightLanes at run time.
-#include "glint/transport/WallLightLanes.hpp"
+// is the same source for each, dispatched by LocalLightLanes at run time.
+#include "glint/transport/LocalLightLanes.hpp"
 
+#include <algorithm>
 #include <cstddef>
 
 #undef HWY_TARGET_INCLUDE
-#define HWY_TARGET_INCLUDE "src/transport/WallLightLanes.cpp"
+#define HWY_TARGET_INCLUDE "src/transport/LocalLightLanes.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
@@ -18,7 +19,7 @@ namespace hn = hwy::HWY_NAMESPACE;
 // so that every lane rounds as WhittedIntegrator::LocalLight does; -ffp-contract=off keeps
 // products and sums apart.
 template <class D>
-void ShadeWallLightLanesIn(D d, const WallLightLaneScene& k, WallLightLaneData& lanes,
+void ShadeLocalLightLanesIn(D d, const LocalLightLaneScene& scene, LocalLightLaneData& lanes,
                            int count) {
   using V = hn::Vec<D>;
   using M = hn::Mask<D>;
@@ -32,17 +33,22 @@ void ShadeWallLightLanesIn(D d, const WallLightLaneScene& k, WallLightLaneData& 
   for (std::size_t i = 0; i < static_cast<std::size_t>(count); i += w) {
     V p[3];
     V n[3];
+    V ray[3];
     for (std::size_t a = 0; a < 3; ++a) {
       p[a] = hn::Load(d, lanes.point[a].data() + i);
       n[a] = hn::Load(d, lanes.normal[a].data() + i);
+      ray[a] = hn::Load(d, lanes.direction[a].data() + i);
     }
+    const M hasSpecular = hn::Ne(hn::Load(d, lanes.specular.data() + i), zero);
+    const bool specular = !hn::AllFalse(d, hasSpecular);
+    const V exponent = hn::Load(d, lanes.exponent.data() + i);
     // OffsetRayOrigin's distance, kOriginOffset (1 + max |p_a|).
     const V offset = hn::Mul(
         set(kOriginOffset),
         hn::Add(one, hn::Max(hn::Max(hn::Abs(p[0]), hn::Abs(p[1])), hn::Abs(p[2]))));
     V sum[3] = {zero, zero, zero};
     V shadowRays = zero;
-    for (const WallLightLaneScene::LightTerms& light : k.lights) {
+    for (const LocalLightLaneScene::LightTerms& light : scene.lights) {
       // l = position - p, r^2 = l.l, l /= sqrt(r^2), cos(theta) = n.l.
       V l[3];
       for (std::size_t a = 0; a < 3; ++a) l[a] = hn::Sub(set(light.position[a]), p[a]);
@@ -65,7 +71,7 @@ void ShadeWallLightLanesIn(D d, const WallLightLaneScene& k, WallLightLaneData& 
       const V va = dot(v[0], v[1], v[2], v[0], v[1], v[2]);  // a = v.v
       M blocked = hn::Lt(one, zero);                          // none
       // Sphere::IntersectsSegment, each opaque sphere.
-      for (const WallLightLaneScene::SphereTerms& s : k.spheres) {
+      for (const LocalLightLaneScene::SphereTerms& s : scene.spheres) {
         V f[3];
         for (std::size_t a = 0; a < 3; ++a) f[a] = hn::Sub(o[a], set(s.centre[a]));
         const V b = dot(f[0], f[1], f[2], v[0], v[1], v[2]);
@@ -84,7 +90,7 @@ void ShadeWallLightLanesIn(D d, const WallLightLaneScene& k, WallLightLaneData& 
         blocked = hn::Or(blocked, hits);
       }
       // Cube::IntersectsSegment, each opaque cube: the bound, then IntersectSlabs along v.
-      for (const WallLightLaneScene::CubeTerms& c : k.cubes) {
+      for (const LocalLightLaneScene::CubeTerms& c : scene.cubes) {
         V f[3];
         for (std::size_t a = 0; a < 3; ++a) f[a] = hn::Sub(o[a], set(c.centre[a]));
         const V b = dot(f[0], f[1], f[2], v[0], v[1], v[2]);
@@ -115,11 +121,36 @@ void ShadeWallLightLanesIn(D d, const WallLightLaneScene& k, WallLightLaneData& 
                                   hn::And(hn::Le(tNear, tFar), hn::Or(nearInside, farInside)));
         blocked = hn::Or(blocked, hits);
       }
-      // E = I (cos(theta) / r^2), the term (rho kd / pi) E, for a lane that casts and is not blocked.
+      // brdf = kd / pi, plus ks (n + 2) / (2 pi) CosinePower(max(0, Reflect(-l, n) . -d), n).
+      V brdf = hn::Load(d, lanes.diffuse.data() + i);
+      if (specular) {
+        const V twice = hn::Mul(set(2.0), dot(hn::Neg(l[0]), hn::Neg(l[1]), hn::Neg(l[2]), n[0],
+                                              n[1], n[2]));  // 2 dot(-l, n)
+        V rd[3];
+        for (std::size_t a = 0; a < 3; ++a) {
+          rd[a] = hn::Sub(hn::Neg(l[a]), hn::Mul(twice, n[a]));
+        }
+        const V along = dot(rd[0], rd[1], rd[2], hn::Neg(ray[0]), hn::Neg(ray[1]), hn::Neg(ray[2]));
+        const V cosR = hn::IfThenElse(hn::Lt(zero, along), along, zero);  // std::max(0, .)
+        // CosinePower by squaring: power *= base where bit b of n is set, base *= base.
+        V power = one;
+        V base = cosR;
+        V k = exponent;
+        for (int b = 0; b < scene.exponentBits; ++b) {
+          const V half = hn::Floor(hn::Mul(k, set(0.5)));
+          const auto odd = hn::Ne(k, hn::Add(half, half));
+          power = hn::IfThenElse(odd, hn::Mul(power, base), power);
+          base = hn::Mul(base, base);
+          k = half;
+        }
+        const V lobe = hn::Mul(hn::Load(d, lanes.specularScale.data() + i), power);
+        brdf = hn::IfThenElse(hasSpecular, hn::Add(brdf, lobe), brdf);
+      }
+      // E = I (cos(theta) / r^2); sum += (rho brdf) E, for a lane that casts and is not blocked.
       const M lit = hn::AndNot(blocked, cast);
       const V e = hn::Div(cosTheta, r2);
       for (std::size_t c = 0; c < 3; ++c) {
-        const V term = hn::Mul(hn::Load(d, lanes.diffuse[c].data() + i),
+        const V term = hn::Mul(hn::Mul(hn::Load(d, lanes.reflectance[c].data() + i), brdf),
                                hn::Mul(set(light.intensity[c]), e));
         sum[c] = hn::IfThenElse(lit, hn::Add(sum[c], term), sum[c]);
       }
@@ -130,11 +161,11 @@ void ShadeWallLightLanesIn(D d, const WallLightLaneScene& k, WallLightLaneData& 
 }
 
 // The target's full width, and one lane (the scalar path: the same code).
-void ShadeWallLightLanes(const WallLightLaneScene& k, WallLightLaneData& lanes, int count) {
-  ShadeWallLightLanesIn(hn::ScalableTag<double>(), k, lanes, count);
+void ShadeLocalLightLanes(const LocalLightLaneScene& k, LocalLightLaneData& lanes, int count) {
+  ShadeLocalLightLanesIn(hn::ScalableTag<double>(), k, lanes, count);
 }
-void ShadeWallLightLane(const WallLightLaneScene& k, WallLightLaneData& lanes, int count) {
-  ShadeWallLightLanesIn(hn::CappedTag<double, 1>(), k, lanes, count);
+void ShadeLocalLightLane(const LocalLightLaneScene& k, LocalLightLaneData& lanes, int count) {
+  ShadeLocalLightLanesIn(hn::CappedTag<double, 1>(), k, lanes, count);
 }
 
 // NOLINTNEXTLINE(google-readability-namespace-comments)
@@ -151,8 +182,8 @@ std::array<double, 3> Components(vec3 v) {
   return {v.x, v.y, v.z};
 }
 
-WallLightLaneScene TermsOf(const Scene& scene) {
-  WallLightLaneScene k;
+LocalLightLaneScene TermsOf(const Scene& scene) {
+  LocalLightLaneScene k;
   for (const PointLight& light : scene.pointLights) {
     k.lights.push_back({Components(light.position), Components(light.intensity)});
   }
@@ -165,28 +196,51 @@ WallLightLaneScene TermsOf(const Scene& scene) {
     k.cubes.push_back({Components(c.Centre()), Components(c.Position()),
                        Components(c.MaxCorner()), c.BoundRadius2()});
   }
+  // Enough squarings for every exponent the lanes may be given: up to 1024, 11 bits.
+  double largest = 0.0;
+  const auto take = [&largest](const Material& m) {
+    if (m.whittedSpecular > 0.0 && LocalLightLanes::Serves(m)) largest = std::max(largest, m.exponent);
+  };
+  for (const Sphere& s : scene.spheres) take(s.GetMaterial());
+  for (const Cube& c : scene.cubes) take(c.GetMaterial());
+  for (int side = 0; side < Wall::kSides; ++side) take(scene.wall.GetMaterial(side));
+  while (static_cast<double>(1 << k.exponentBits) <= largest) ++k.exponentBits;
   return k;
 }
 
 }  // namespace
 
-WallLightLanes::WallLightLanes(const Scene& scene, SimdTarget target)
+LocalLightLanes::LocalLightLanes(const Scene& scene, SimdTarget target)
     : k_(TermsOf(scene)),
       width_(SimdLanes(ResolveSimdTarget(target))),
-      kernel_(KernelForTarget<WallLightKernel>(
-          ResolveSimdTarget(target), HWY_CHOOSE_SSE4(ShadeWallLightLanes),
-          HWY_CHOOSE_AVX2(ShadeWallLightLanes), HWY_CHOOSE_AVX3(ShadeWallLightLanes),
-          &HWY_STATIC_DISPATCH(ShadeWallLightLane))) {}
+      kernel_(KernelForTarget<LocalLightKernel>(
+          ResolveSimdTarget(target), HWY_CHOOSE_SSE4(ShadeLocalLightLanes),
+          HWY_CHOOSE_AVX2(ShadeLocalLightLanes), HWY_CHOOSE_AVX3(ShadeLocalLightLanes),
+          &HWY_STATIC_DISPATCH(ShadeLocalLightLane))) {}
 
-void WallLightLanes::Shade(WallLightLaneData& lanes, int count) const {
+void LocalLightLanes::SetMaterial(LocalLightLaneData& lanes, std::size_t j, const Material& m) {
+  for (std::size_t c = 0; c < 3; ++c) lanes.reflectance[c][j] = m.reflectance[static_cast<glm::length_t>(c)];
+  lanes.diffuse[j] = m.whittedDiffuse * kInvPi;
+  const bool specular = m.whittedSpecular > 0.0;
+  lanes.specular[j] = specular ? 1.0 : 0.0;
+  lanes.specularScale[j] = specular ? m.whittedSpecular * (m.exponent + 2.0) / (2.0 * kPi) : 0.0;
+  lanes.exponent[j] = specular ? m.exponent : 0.0;
+}
+
+void LocalLightLanes::Shade(LocalLightLaneData& lanes, int count) const {
   const int padded = (count + width_ - 1) / width_ * width_;
   for (int i = count; i < padded; ++i) {  // spare lanes: lane 0's hit, results ignored
     const auto j = static_cast<std::size_t>(i);
     for (std::size_t a = 0; a < 3; ++a) {
       lanes.point[a][j] = lanes.point[a][0];
       lanes.normal[a][j] = lanes.normal[a][0];
-      lanes.diffuse[a][j] = lanes.diffuse[a][0];
+      lanes.direction[a][j] = lanes.direction[a][0];
+      lanes.reflectance[a][j] = lanes.reflectance[a][0];
     }
+    lanes.diffuse[j] = lanes.diffuse[0];
+    lanes.specularScale[j] = lanes.specularScale[0];
+    lanes.exponent[j] = lanes.exponent[0];
+    lanes.specular[j] = lanes.specular[0];
   }
   kernel_(k_, lanes, padded);
 }

@@ -8,6 +8,19 @@
 
 namespace glint {
 
+namespace {
+
+// CrossDielectric's answer for lane j of the lanes that found it.
+DielectricInterface KnownInterface(const SpecularLaneData& lanes, std::size_t j) {
+  DielectricInterface glass{std::nullopt, lanes.reflectance[j]};
+  if (lanes.refracts[j] != 0.0) {
+    glass.refracted = vec3(lanes.refracted[0][j], lanes.refracted[1][j], lanes.refracted[2][j]);
+  }
+  return glass;
+}
+
+}  // namespace
+
 WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth, FresnelModel fresnel,
                                      std::optional<Pinhole> camera, SimdTarget simd)
     : scene_(scene), maxDepth_(maxDepth), fresnel_(fresnel) {
@@ -16,6 +29,7 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth, FresnelMo
     hitLanes_.emplace(scene_, *camera, /*withAreaLight=*/false, simd);
     secondaryLanes_.emplace(scene_, /*withAreaLight=*/false, simd);
     localLights_.emplace(scene_, simd);
+    specularLanes_.emplace(simd);
   }
 }
 
@@ -101,7 +115,8 @@ Colour WhittedIntegrator::LocalLight(const Hit& hit, vec3 d, RenderStats& stats,
 }
 
 std::uint32_t WhittedIntegrator::SpawnChildren(RayTree& tree, std::uint32_t index, const Hit& hit,
-                                               RenderStats& stats) const {
+                                               RenderStats& stats, const SpecularLaneData* known,
+                                               std::size_t lane) const {
   const Ray parent = tree[index];
   const Material& m = *hit.material;
   const double w = m.WhittedChildWeight();
@@ -116,11 +131,14 @@ std::uint32_t WhittedIntegrator::SpawnChildren(RayTree& tree, std::uint32_t inde
   };
   Child children[2];
   std::uint32_t count = 0;
-  const vec3 mirror = glm::normalize(Reflect(d, hit.normal));
+  const vec3 mirror = known != nullptr ? vec3(known->mirror[0][lane], known->mirror[1][lane],
+                                               known->mirror[2][lane])
+                                        : glm::normalize(Reflect(d, hit.normal));
   if (m.IsTransparent()) {
     // Fresnel split; F = 1 under total internal reflection. The index ratio flips for
     // rays inside (CrossDielectric sees it from dot(d, n)).
-    const DielectricInterface glass = CrossDielectric(d, hit.normal, m.ior);
+    const DielectricInterface glass = known != nullptr ? KnownInterface(*known, lane)
+                                                       : CrossDielectric(d, hit.normal, m.ior);
     const std::optional<vec3>& refracted = glass.refracted;
     const double f = GlassReflectance(glass, m.ior, fresnel_);  // 1 for total internal reflection
     if (f > 0.0) children[count++] = {mirror, Colour(w * f), RayKind::Reflected, parent.inside};
@@ -162,8 +180,9 @@ void WhittedIntegrator::FindHit(const RayTree& tree, std::uint32_t index, const 
 
 std::uint32_t WhittedIntegrator::ShadeNode(RayTree& tree, std::uint32_t index, const Hit& hit,
                                            Colour& local, RenderStats& stats,
-                                           const PixelShaft& shaft,
-                                           const Colour* knownLocal) const {
+                                           const PixelShaft& shaft, const Colour* knownLocal,
+                                           const SpecularLaneData* known,
+                                           std::size_t lane) const {
   if (!(hit.t < kInfinity)) {
     // Left the room through the open front: radiance 0.
     tree[index].final = true;
@@ -179,7 +198,7 @@ std::uint32_t WhittedIntegrator::ShadeNode(RayTree& tree, std::uint32_t index, c
   // the first.
   std::uint32_t count = 0;
   if (hit.material->type != MaterialType::Lambertian && tree[index].depth + 1 < maxDepth_) {
-    count = SpawnChildren(tree, index, hit, stats);
+    count = SpawnChildren(tree, index, hit, stats, known, lane);
   }
   tree[index].final = count == 0;
   tree[index].colour = local;
@@ -207,7 +226,7 @@ Colour WhittedIntegrator::TraceNode(RayTree& tree, std::uint32_t index, RenderSt
 
 void WhittedIntegrator::ShadeBatch(RayTree& trees, std::uint32_t first, int n, const Hit* hits,
                                    const PixelShaft& shaft, LocalLightLaneData& lights,
-                                   RenderStats& stats) const {
+                                   SpecularLaneData& specular, RenderStats& stats) const {
   // The local terms in lanes, where every light's shadow ray is cast (the shaft knows no
   // light visible) and the material's lobe is one the lanes raise by squaring.
   const bool inLanes = shaft.pointLightsVisible == 0;
@@ -231,18 +250,36 @@ void WhittedIntegrator::ShadeBatch(RayTree& trees, std::uint32_t first, int n, c
     laneOf[lane] = inLaneCount++;
   }
   if (inLaneCount > 0) localLights_->Shade(lights, inLaneCount);
+  // The children's directions too, for every hit that will spawn (lane j's in lane j).
+  bool spawns = false;
+  for (int j = 0; j < n; ++j) {
+    const auto lane = static_cast<std::size_t>(j);
+    const Hit& hit = hits[lane];
+    const Ray& ray = trees[first + static_cast<std::uint32_t>(j)];
+    const bool spawning = hit.t < kInfinity && hit.material->type != MaterialType::Lambertian &&
+                          ray.depth + 1 < maxDepth_;
+    for (std::size_t a = 0; a < 3; ++a) {
+      const auto c = static_cast<glm::length_t>(a);
+      specular.direction[a][lane] = ray.direction[c];
+      specular.normal[a][lane] = spawning ? hit.normal[c] : 0.0;
+    }
+    specular.ior[lane] = spawning ? hit.material->ior : 1.0;
+    spawns = spawns || spawning;
+  }
+  if (spawns) specularLanes_->Find(specular, n);
   Colour local;
   for (int j = 0; j < n; ++j) {
     const auto lane = static_cast<std::size_t>(j);
     const std::uint32_t index = first + static_cast<std::uint32_t>(j);
+    const SpecularLaneData* directions = spawns ? &specular : nullptr;
     if (laneOf[lane] < 0) {
-      ShadeNode(trees, index, hits[lane], local, stats, shaft);
+      ShadeNode(trees, index, hits[lane], local, stats, shaft, nullptr, directions, lane);
       continue;
     }
     const auto k = static_cast<std::size_t>(laneOf[lane]);
     const Colour known(lights.colour[0][k], lights.colour[1][k], lights.colour[2][k]);
     stats.shadowRays += static_cast<std::uint64_t>(lights.shadowRays[k]);
-    ShadeNode(trees, index, hits[lane], local, stats, shaft, &known);
+    ShadeNode(trees, index, hits[lane], local, stats, shaft, &known, directions, lane);
   }
 }
 
@@ -251,6 +288,7 @@ void WhittedIntegrator::TraceGroupFromLanes(RayTree& trees, std::uint32_t firstR
                                             RenderStats& stats, Colour* colours) const {
   std::array<Hit, RayLanes::kMax> hits;
   LocalLightLaneData lights;
+  SpecularLaneData specular;
   // The camera rays, from the first-hit lanes' hits (or Scene::Intersect's, where the
   // lanes handed a ray back), with what the pixel's shaft knows.
   for (int lane = 0; lane < count; ++lane) {
@@ -258,7 +296,7 @@ void WhittedIntegrator::TraceGroupFromLanes(RayTree& trees, std::uint32_t firstR
     Hit& hit = hits[static_cast<std::size_t>(lane)];
     if (hitLanes_->Known(lanes, lane, hit) == nullptr) FindHit(trees, root, shaft, hit);
   }
-  ShadeBatch(trees, firstRoot, count, hits.data(), shaft, lights, stats);
+  ShadeBatch(trees, firstRoot, count, hits.data(), shaft, lights, specular, stats);
   // Then a level at a time: the children a level makes are the next level, contiguous
   // in the arena after it, and their hits are found W at a time.
   RayLanes level;
@@ -283,7 +321,7 @@ void WhittedIntegrator::TraceGroupFromLanes(RayTree& trees, std::uint32_t firstR
           secondaryLanes_->FillHit(level, j, hits[lane]);
         }
       }
-      ShadeBatch(trees, first, n, hits.data(), PixelShaft{}, lights, stats);
+      ShadeBatch(trees, first, n, hits.data(), PixelShaft{}, lights, specular, stats);
     }
     begin = end;
   }

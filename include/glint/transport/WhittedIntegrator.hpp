@@ -13,6 +13,7 @@
 #include "glint/transport/Fresnel.hpp"
 #include "glint/transport/HitLanes.hpp"
 #include "glint/transport/LocalLightLanes.hpp"
+#include "glint/transport/SpecularLanes.hpp"
 #include "glint/transport/WhittedWallLanes.hpp"
 
 namespace glint {
@@ -71,18 +72,23 @@ class WhittedIntegrator final : public Integrator {
   // What TraceNode does at tree[index] once its hit is known, but for its children's
   // colours: its end, object and final flag, its local light into `local` (and, with no
   // children, its colour), its children; returns how many it made. `knownLocal`: its
-  // local light, found already (LocalLightLanes), or null.
+  // local light, found already (LocalLightLanes), or null; `known`: its children's
+  // directions, found already in lane `lane` (SpecularLanes), or null.
   std::uint32_t ShadeNode(RayTree& tree, std::uint32_t index, const Hit& hit, Colour& local,
                           RenderStats& stats, const PixelShaft& shaft,
-                          const Colour* knownLocal = nullptr) const;
+                          const Colour* knownLocal = nullptr,
+                          const SpecularLaneData* known = nullptr, std::size_t lane = 0) const;
   // Shades tree[first, first + n), whose hits are hits[0, n), as ShadeNode does, their
-  // local terms in lanes (LocalLightLanes), using `lights` as the lanes' storage.
+  // local terms and children's directions in lanes (LocalLightLanes, SpecularLanes), with
+  // `lights` and `specular` as the lanes' storage.
   void ShadeBatch(RayTree& trees, std::uint32_t first, int n, const Hit* hits,
-                  const PixelShaft& shaft, LocalLightLaneData& lights, RenderStats& stats) const;
+                  const PixelShaft& shaft, LocalLightLaneData& lights, SpecularLaneData& specular,
+                  RenderStats& stats) const;
   // Creates the reflected and refracted children of tree[index] for its hit and
-  // returns how many it made.
+  // returns how many it made; `known`, `lane`: as for ShadeNode.
   std::uint32_t SpawnChildren(RayTree& tree, std::uint32_t index, const Hit& hit,
-                              RenderStats& stats) const;
+                              RenderStats& stats, const SpecularLaneData* known = nullptr,
+                              std::size_t lane = 0) const;
   // Point light i, at cos(theta) > 0 from p (normal n facing the ray): counts its
   // shadow ray and says whether the light reaches p (the shaft's answer, or a shadow
   // ray through transparent objects).
@@ -95,6 +101,7 @@ class WhittedIntegrator final : public Integrator {
   std::optional<CameraHitLanes> hitLanes_;  // the same
   std::optional<HitLanes> secondaryLanes_;  // the same
   std::optional<LocalLightLanes> localLights_;  // the same
+  std::optional<SpecularLanes> specularLanes_;  // the same
 };
 
 }  // namespace glint

@@ -124,8 +124,7 @@ PixelPass Pixel::TracePassWithFirstHits(const Camera& camera, int x, int y, int 
       std::array<Colour, RayLanes::kMax> colours;
       for (std::size_t j = 0; j < static_cast<std::size_t>(count); ++j) {
         trees.Add(CameraRay(
-            camera.Eye(),
-            vec3(lanes.direction[0][j], lanes.direction[1][j], lanes.direction[2][j]),
+            camera.Eye(), vec3(lanes.direction[0][j], lanes.direction[1][j], lanes.direction[2][j]),
             importance));
         ++stats.cameraRays;
         if (lanes.closest[j] >= 0.0) ++stats.laneRays;

@@ -169,9 +169,9 @@ void FindSecondaryHitsIn(D d, const HitLaneScene& k, RayLanes& lanes, int count)
       const V high = set(1.0 + kEdgeTolerance);
       const auto outside =
           hn::Or(hn::Or(hn::Lt(u, low), hn::Gt(u, high)), hn::Or(hn::Lt(v, low), hn::Gt(v, high)));
-      const auto wins = hn::AndNot(
-          outside, hn::And(hn::And(facing, hn::Ne(denom, zero)),
-                           hn::And(hn::Gt(tHit, zero), hn::Lt(tHit, tMax))));
+      const auto wins =
+          hn::AndNot(outside, hn::And(hn::And(facing, hn::Ne(denom, zero)),
+                                      hn::And(hn::Gt(tHit, zero), hn::Lt(tHit, tMax))));
       t = hn::IfThenElse(wins, tHit, t);
       winner = hn::IfThenElse(wins, code(Scene::Closest::Light), winner);
     }
@@ -213,8 +213,8 @@ HitLaneScene TermsOf(const Scene& scene, bool withAreaLight) {
     k.spheres.push_back({Components(s.Centre()), s.Radius() * s.Radius()});
   }
   for (const Cube& c : scene.cubes) {
-    k.cubes.push_back({Components(c.Centre()), Components(c.Position()),
-                       Components(c.MaxCorner()), c.BoundRadius(), c.BoundRadius2()});
+    k.cubes.push_back({Components(c.Centre()), Components(c.Position()), Components(c.MaxCorner()),
+                       c.BoundRadius(), c.BoundRadius2()});
   }
   if (withAreaLight && scene.light) {
     const Rectangle& shape = scene.light->Shape();

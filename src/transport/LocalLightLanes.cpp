@@ -20,7 +20,7 @@ namespace hn = hwy::HWY_NAMESPACE;
 // products and sums apart.
 template <class D>
 void ShadeLocalLightLanesIn(D d, const LocalLightLaneScene& scene, LocalLightLaneData& lanes,
-                           int count) {
+                            int count) {
   using V = hn::Vec<D>;
   using M = hn::Mask<D>;
   const std::size_t w = hn::Lanes(d);
@@ -43,9 +43,9 @@ void ShadeLocalLightLanesIn(D d, const LocalLightLaneScene& scene, LocalLightLan
     const bool specular = !hn::AllFalse(d, hasSpecular);
     const V exponent = hn::Load(d, lanes.exponent.data() + i);
     // OffsetRayOrigin's distance, kOriginOffset (1 + max |p_a|).
-    const V offset = hn::Mul(
-        set(kOriginOffset),
-        hn::Add(one, hn::Max(hn::Max(hn::Abs(p[0]), hn::Abs(p[1])), hn::Abs(p[2]))));
+    const V offset =
+        hn::Mul(set(kOriginOffset),
+                hn::Add(one, hn::Max(hn::Max(hn::Abs(p[0]), hn::Abs(p[1])), hn::Abs(p[2]))));
     V sum[3] = {zero, zero, zero};
     V shadowRays = zero;
     for (const LocalLightLaneScene::LightTerms& light : scene.lights) {
@@ -69,7 +69,7 @@ void ShadeLocalLightLanesIn(D d, const LocalLightLaneScene& scene, LocalLightLan
         v[a] = hn::Sub(set(light.position[a]), o[a]);
       }
       const V va = dot(v[0], v[1], v[2], v[0], v[1], v[2]);  // a = v.v
-      M blocked = hn::Lt(one, zero);                          // none
+      M blocked = hn::Lt(one, zero);                         // none
       // Sphere::IntersectsSegment, each opaque sphere.
       for (const LocalLightLaneScene::SphereTerms& s : scene.spheres) {
         V f[3];
@@ -78,7 +78,8 @@ void ShadeLocalLightLanesIn(D d, const LocalLightLaneScene& scene, LocalLightLan
         V q[3];
         for (std::size_t a = 0; a < 3; ++a) q[a] = hn::Sub(hn::Mul(va, f[a]), hn::Mul(b, v[a]));
         const V r2a = set(s.r2);
-        const V scaled = hn::Sub(hn::Mul(hn::Mul(r2a, va), va), dot(q[0], q[1], q[2], q[0], q[1], q[2]));
+        const V scaled =
+            hn::Sub(hn::Mul(hn::Mul(r2a, va), va), dot(q[0], q[1], q[2], q[0], q[1], q[2]));
         const M misses = hn::Or(hn::Lt(scaled, zero), hn::Eq(va, zero));
         const V c = hn::Sub(dot(f[0], f[1], f[2], f[0], f[1], f[2]), r2a);
         const V root = hn::Neg(hn::Add(b, hn::CopySign(hn::Sqrt(hn::Div(scaled, va)), b)));
@@ -106,7 +107,8 @@ void ShadeLocalLightLanesIn(D d, const LocalLightLaneScene& scene, LocalLightLan
           const V hi = set(c.high[a]);
           // Parallel to the slab: inside it for all s, or never.
           const M parallel = hn::Eq(v[a], zero);
-          missesSlab = hn::Or(missesSlab, hn::And(parallel, hn::Or(hn::Lt(o[a], lo), hn::Gt(o[a], hi))));
+          missesSlab =
+              hn::Or(missesSlab, hn::And(parallel, hn::Or(hn::Lt(o[a], lo), hn::Gt(o[a], hi))));
           const V t0 = hn::Div(hn::Sub(lo, o[a]), v[a]);
           const V t1 = hn::Div(hn::Sub(hi, o[a]), v[a]);
           const M backward = hn::Lt(v[a], zero);
@@ -193,13 +195,14 @@ LocalLightLaneScene TermsOf(const Scene& scene) {
   }
   for (const Cube& c : scene.cubes) {
     if (c.GetMaterial().IsTransparent()) continue;
-    k.cubes.push_back({Components(c.Centre()), Components(c.Position()),
-                       Components(c.MaxCorner()), c.BoundRadius2()});
+    k.cubes.push_back({Components(c.Centre()), Components(c.Position()), Components(c.MaxCorner()),
+                       c.BoundRadius2()});
   }
   // Enough squarings for every exponent the lanes may be given: up to 1024, 11 bits.
   double largest = 0.0;
   const auto take = [&largest](const Material& m) {
-    if (m.whittedSpecular > 0.0 && LocalLightLanes::Serves(m)) largest = std::max(largest, m.exponent);
+    if (m.whittedSpecular > 0.0 && LocalLightLanes::Serves(m))
+      largest = std::max(largest, m.exponent);
   };
   for (const Sphere& s : scene.spheres) take(s.GetMaterial());
   for (const Cube& c : scene.cubes) take(c.GetMaterial());
@@ -219,7 +222,8 @@ LocalLightLanes::LocalLightLanes(const Scene& scene, SimdTarget target)
           &HWY_STATIC_DISPATCH(ShadeLocalLightLane))) {}
 
 void LocalLightLanes::SetMaterial(LocalLightLaneData& lanes, std::size_t j, const Material& m) {
-  for (std::size_t c = 0; c < 3; ++c) lanes.reflectance[c][j] = m.reflectance[static_cast<glm::length_t>(c)];
+  for (std::size_t c = 0; c < 3; ++c)
+    lanes.reflectance[c][j] = m.reflectance[static_cast<glm::length_t>(c)];
   lanes.diffuse[j] = m.whittedDiffuse * kInvPi;
   const bool specular = m.whittedSpecular > 0.0;
   lanes.specular[j] = specular ? 1.0 : 0.0;

@@ -132,13 +132,13 @@ std::uint32_t WhittedIntegrator::SpawnChildren(RayTree& tree, std::uint32_t inde
   Child children[2];
   std::uint32_t count = 0;
   const vec3 mirror = known != nullptr ? vec3(known->mirror[0][lane], known->mirror[1][lane],
-                                               known->mirror[2][lane])
-                                        : glm::normalize(Reflect(d, hit.normal));
+                                              known->mirror[2][lane])
+                                       : glm::normalize(Reflect(d, hit.normal));
   if (m.IsTransparent()) {
     // Fresnel split; F = 1 under total internal reflection. The index ratio flips for
     // rays inside (CrossDielectric sees it from dot(d, n)).
-    const DielectricInterface glass = known != nullptr ? KnownInterface(*known, lane)
-                                                       : CrossDielectric(d, hit.normal, m.ior);
+    const DielectricInterface glass =
+        known != nullptr ? KnownInterface(*known, lane) : CrossDielectric(d, hit.normal, m.ior);
     const std::optional<vec3>& refracted = glass.refracted;
     const double f = GlassReflectance(glass, m.ior, fresnel_);  // 1 for total internal reflection
     if (f > 0.0) children[count++] = {mirror, Colour(w * f), RayKind::Reflected, parent.inside};
@@ -181,8 +181,7 @@ void WhittedIntegrator::FindHit(const RayTree& tree, std::uint32_t index, const 
 std::uint32_t WhittedIntegrator::ShadeNode(RayTree& tree, std::uint32_t index, const Hit& hit,
                                            Colour& local, RenderStats& stats,
                                            const PixelShaft& shaft, const Colour* knownLocal,
-                                           const SpecularLaneData* known,
-                                           std::size_t lane) const {
+                                           const SpecularLaneData* known, std::size_t lane) const {
   if (!(hit.t < kInfinity)) {
     // Left the room through the open front: radiance 0.
     tree[index].final = true;
@@ -193,7 +192,8 @@ std::uint32_t WhittedIntegrator::ShadeNode(RayTree& tree, std::uint32_t index, c
   }
   tree[index].end = hit.point;
   tree[index].object = hit.object;
-  local = knownLocal != nullptr ? *knownLocal : LocalLight(hit, tree[index].direction, stats, shaft);
+  local =
+      knownLocal != nullptr ? *knownLocal : LocalLight(hit, tree[index].direction, stats, shaft);
   // Walls spawn nothing; the depth limit counts ray iterations, the camera ray being
   // the first.
   std::uint32_t count = 0;

@@ -39,8 +39,7 @@ vec3 UnitDirection(Pcg32& rng) {
 // A ray of kind `kind`: 0-3 a camera ray's mirror reflection, offset as the integrators
 // offset it; 4 a random point of the room towards a random direction; 5 towards the
 // light's centre; 6 a direction with one component exactly 0; 7 from outside the room.
-void RayOfKind(const Scene& scene, const Pinhole& camera, int kind, Pcg32& rng, vec3& o,
-               vec3& d) {
+void RayOfKind(const Scene& scene, const Pinhole& camera, int kind, Pcg32& rng, vec3& o, vec3& d) {
   const vec3 lo = scene.wall.Position();
   const vec3 size = scene.wall.MaxCorner() - lo;
   const vec3 inside = lo + vec3(rng.Uniform(), rng.Uniform(), rng.Uniform()) * size;

@@ -25,7 +25,7 @@ struct Counts {
   int shadowed = 0;    // a light blocked by an object
   int objects = 0;     // hits on a sphere or a cube
   int highlights = 0;  // hits whose specular lobe adds light
-  int dark = 0;      // no light reaches the hit
+  int dark = 0;        // no light reaches the hit
 };
 
 Counts CompareWithScalar(const Scene& scene, SimdTarget target, int groups) {
@@ -45,8 +45,8 @@ Counts CompareWithScalar(const Scene& scene, SimdTarget target, int groups) {
     std::vector<std::uint64_t> rays;
     for (int i = 0; i < count;) {
       const vec3 lo = scene.wall.Position();
-      const vec3 o = lo + vec3(rng.Uniform(), rng.Uniform(), rng.Uniform()) *
-                              (scene.wall.MaxCorner() - lo);
+      const vec3 o =
+          lo + vec3(rng.Uniform(), rng.Uniform(), rng.Uniform()) * (scene.wall.MaxCorner() - lo);
       const double z = 2.0 * rng.Uniform() - 1.0;
       const double phi = 2.0 * kPi * rng.Uniform();
       const double s = std::sqrt(1.0 - z * z);
@@ -103,8 +103,8 @@ TEST(LocalLightLanes, EveryTargetShadesScalarHitsBitForBit) {
       EXPECT_GT(n.shadowed, n.compared / 50);    // the objects' shadows were met
       EXPECT_GT(n.objects, n.compared / 4);      // and the objects, walls not only
       EXPECT_GT(n.highlights, n.compared / 50);  // with their highlights
-      EXPECT_GT(n.dark, 0);                    // some hits see no light
-      EXPECT_LT(n.dark, n.compared / 2);       // most see one
+      EXPECT_GT(n.dark, 0);                      // some hits see no light
+      EXPECT_LT(n.dark, n.compared / 2);         // most see one
     }
   }
 }

@@ -27,7 +27,7 @@ vec3 UnitDirection(Pcg32& rng) {
 
 struct Counts {
   int compared = 0;
-  int total = 0;      // total internal reflections
+  int total = 0;  // total internal reflections
   int fromInside = 0;
 };
 
@@ -42,8 +42,9 @@ Counts CompareWithScalar(SimdTarget target, int groups) {
       const vec3 normal = UnitDirection(rng);
       vec3 d = UnitDirection(rng);
       const int kind = static_cast<int>(rng.NextU32() % 6U);
-      if (kind == 0) d = glm::normalize(d - glm::dot(d, normal) * normal + 1e-9 * normal);  // grazing
-      if (kind == 1) d = -normal;                                                           // normal incidence
+      if (kind == 0)
+        d = glm::normalize(d - glm::dot(d, normal) * normal + 1e-9 * normal);  // grazing
+      if (kind == 1) d = -normal;                                              // normal incidence
       const double ior = kind == 2 ? 1.0 : (kind == 3 ? 2.4 : 1.5);
       for (std::size_t a = 0; a < 3; ++a) {
         const auto c = static_cast<glm::length_t>(a);
@@ -77,7 +78,7 @@ TEST(SpecularLanes, EveryTargetFindsScalarDirectionsBitForBit) {
   for (const SimdTarget target : SupportedSimdTargets()) {
     SCOPED_TRACE(SimdTargetName(target));
     const Counts n = CompareWithScalar(target, 4000);
-    EXPECT_GT(n.total, n.compared / 20);       // total internal reflection was met
+    EXPECT_GT(n.total, n.compared / 20);      // total internal reflection was met
     EXPECT_GT(n.fromInside, n.compared / 5);  // and rays from inside
   }
 }

@@ -97,9 +97,9 @@ class WhittedIntegrator final : public Integrator {
   const Scene& scene_;
   int maxDepth_;
   FresnelModel fresnel_;
-  std::optional<WhittedWallLanes> lanes_;   // with the camera
-  std::optional<CameraHitLanes> hitLanes_;  // the same
-  std::optional<HitLanes> secondaryLanes_;  // the same
+  std::optional<WhittedWallLanes> lanes_;       // with the camera
+  std::optional<CameraHitLanes> hitLanes_;      // the same
+  std::optional<HitLanes> secondaryLanes_;      // the same
   std::optional<LocalLightLanes> localLights_;  // the same
   std::optional<SpecularLanes> specularLanes_;  // the same
 };

@@ -61,7 +61,10 @@ class CameraHitLanes {
   // Whether the lanes pay for a pass of `rays` rays of a pixel: from 4 lanes (AVX2 and
   // AVX-512) and 8 rays. Measured (BENCHMARKS.md, "SIMD lanes"): in Monte Carlo mode the
   // scalar lane loses 5% and SSE4 gains nothing; AVX-512 at Whitted's 4 rays loses 3.5%.
-  bool Pays(int rays) const { return width_ >= 4 && rays >= 8; }
+  bool Pays(int rays) const { return PaysFrom(rays, 8); }
+  // The same from `fewest` rays: Whitted takes them from 4, its trees then running a level
+  // at a time (1.25x at its default 4 rays a pixel, BENCHMARKS.md, "SIMD lanes").
+  bool PaysFrom(int rays, int fewest) const { return width_ >= 4 && rays >= fewest; }
   SimdTarget Target() const { return target_; }
   // Lanes [0, count) from their px, py: direction, and t, closest, closestIndex and
   // closestFace (RayLanes).

@@ -38,9 +38,10 @@ class WhittedIntegrator final : public Integrator {
   bool LanesTakeLightPoint() const override { return false; }  // point lights: no numbers
   void TraceLanes(RayLanes& lanes, int count, const PixelShaft& shaft,
                   RenderStats& stats) const override;
-  // The other pixels' camera rays find their first hit in lanes too.
+  // The other pixels' camera rays find their first hit in lanes too, from 4 rays a pixel
+  // (Whitted's default; their trees then run a level at a time).
   bool FirstHitLanes(const PixelShaft& shaft, int rays) const override {
-    return hitLanes_ && LaneWidth(shaft) == 0 && hitLanes_->Pays(rays);
+    return hitLanes_ && LaneWidth(shaft) == 0 && hitLanes_->PaysFrom(rays, 4);
   }
   void FindFirstHits(RayLanes& lanes, int count) const override { hitLanes_->Trace(lanes, count); }
   Colour TraceFromLane(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,

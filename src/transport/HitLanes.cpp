@@ -4,6 +4,8 @@
 
 #include <cstddef>
 
+#include "glint/transport/CameraWallLanes.hpp"  // LaneArray
+
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/transport/HitLanes.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -201,28 +203,24 @@ namespace glint {
 
 namespace {
 
-std::array<double, 3> Components(vec3 v) {
-  return {v.x, v.y, v.z};
-}
-
 HitLaneScene TermsOf(const Scene& scene, bool withAreaLight) {
   HitLaneScene k;
-  k.roomLow = Components(scene.wall.Position());
-  k.roomHigh = Components(scene.wall.MaxCorner());
+  k.roomLow = LaneArray(scene.wall.Position());
+  k.roomHigh = LaneArray(scene.wall.MaxCorner());
   for (const Sphere& s : scene.spheres) {
-    k.spheres.push_back({Components(s.Centre()), s.Radius() * s.Radius()});
+    k.spheres.push_back({LaneArray(s.Centre()), s.Radius() * s.Radius()});
   }
   for (const Cube& c : scene.cubes) {
-    k.cubes.push_back({Components(c.Centre()), Components(c.Position()), Components(c.MaxCorner()),
+    k.cubes.push_back({LaneArray(c.Centre()), LaneArray(c.Position()), LaneArray(c.MaxCorner()),
                        c.BoundRadius(), c.BoundRadius2()});
   }
   if (withAreaLight && scene.light) {
     const Rectangle& shape = scene.light->Shape();
     k.light = true;
-    k.lightCorner = Components(shape.Corner());
-    k.lightNormal = Components(shape.Normal());
-    k.lightInvA = Components(shape.InvA());
-    k.lightInvB = Components(shape.InvB());
+    k.lightCorner = LaneArray(shape.Corner());
+    k.lightNormal = LaneArray(shape.Normal());
+    k.lightInvA = LaneArray(shape.InvA());
+    k.lightInvB = LaneArray(shape.InvB());
   }
   return k;
 }
@@ -232,11 +230,11 @@ HitLaneScene TermsOf(const Scene& scene, bool withAreaLight) {
 HitLanes::HitLanes(const Scene& scene, bool withAreaLight, SimdTarget target)
     : scene_(scene),
       k_(TermsOf(scene, withAreaLight)),
-      target_(ResolveSimdTarget(target)),
-      width_(SimdLanes(target_)),
+      width_(SimdLanes(ResolveSimdTarget(target))),
       kernel_(KernelForTarget<SecondaryHitKernel>(
-          target_, HWY_CHOOSE_SSE4(FindSecondaryHits), HWY_CHOOSE_AVX2(FindSecondaryHits),
-          HWY_CHOOSE_AVX3(FindSecondaryHits), &HWY_STATIC_DISPATCH(FindSecondaryHitsOneLane))) {}
+          ResolveSimdTarget(target), HWY_CHOOSE_SSE4(FindSecondaryHits),
+          HWY_CHOOSE_AVX2(FindSecondaryHits), HWY_CHOOSE_AVX3(FindSecondaryHits),
+          &HWY_STATIC_DISPATCH(FindSecondaryHitsOneLane))) {}
 
 void HitLanes::Trace(RayLanes& lanes, int count) const {
   const int padded = (count + width_ - 1) / width_ * width_;

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "glint/transport/CameraWallLanes.hpp"  // LaneArray
+
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/transport/LocalLightLanes.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -132,8 +134,10 @@ void ShadeLocalLightLanesIn(D d, const LocalLightLaneScene& scene, LocalLightLan
         for (std::size_t a = 0; a < 3; ++a) {
           rd[a] = hn::Sub(hn::Neg(l[a]), hn::Mul(twice, n[a]));
         }
-        const V along = dot(rd[0], rd[1], rd[2], hn::Neg(ray[0]), hn::Neg(ray[1]), hn::Neg(ray[2]));
-        const V cosR = hn::IfThenElse(hn::Lt(zero, along), along, zero);  // std::max(0, .)
+        const V towardsEye =
+            dot(rd[0], rd[1], rd[2], hn::Neg(ray[0]), hn::Neg(ray[1]), hn::Neg(ray[2]));
+        const V cosR =
+            hn::IfThenElse(hn::Lt(zero, towardsEye), towardsEye, zero);  // std::max(0, .)
         // CosinePower by squaring: power *= base where bit b of n is set, base *= base.
         V power = one;
         V base = cosR;
@@ -180,22 +184,18 @@ namespace glint {
 
 namespace {
 
-std::array<double, 3> Components(vec3 v) {
-  return {v.x, v.y, v.z};
-}
-
 LocalLightLaneScene TermsOf(const Scene& scene) {
   LocalLightLaneScene k;
   for (const PointLight& light : scene.pointLights) {
-    k.lights.push_back({Components(light.position), Components(light.intensity)});
+    k.lights.push_back({LaneArray(light.position), LaneArray(light.intensity)});
   }
   for (const Sphere& s : scene.spheres) {
     if (s.GetMaterial().IsTransparent()) continue;  // shadow rays pass through glass
-    k.spheres.push_back({Components(s.Centre()), s.Radius() * s.Radius()});
+    k.spheres.push_back({LaneArray(s.Centre()), s.Radius() * s.Radius()});
   }
   for (const Cube& c : scene.cubes) {
     if (c.GetMaterial().IsTransparent()) continue;
-    k.cubes.push_back({Components(c.Centre()), Components(c.Position()), Components(c.MaxCorner()),
+    k.cubes.push_back({LaneArray(c.Centre()), LaneArray(c.Position()), LaneArray(c.MaxCorner()),
                        c.BoundRadius2()});
   }
   // Enough squarings for every exponent the lanes may be given: up to 1024, 11 bits.

@@ -43,8 +43,6 @@ class HitLanes {
   // runs if it lacks `target`.
   HitLanes(const Scene& scene, bool withAreaLight, SimdTarget target);
 
-  SimdTarget Target() const { return target_; }
-  int Width() const { return width_; }
   // Lanes [0, count) from their start and (unit) direction: t, closest, closestIndex and
   // closestFace (RayLanes), as for CameraHitLanes. Lanes up to the next multiple of the
   // width are overwritten with lane 0's ray.
@@ -56,7 +54,6 @@ class HitLanes {
  private:
   const Scene& scene_;
   HitLaneScene k_;
-  SimdTarget target_;  // resolved
   int width_;
   SecondaryHitKernel kernel_;
 };

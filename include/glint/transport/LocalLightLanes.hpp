@@ -66,7 +66,6 @@ class LocalLightLanes {
   }
   // Lane j's material inputs, as LocalLight computes them from `m`.
   static void SetMaterial(LocalLightLaneData& lanes, std::size_t j, const Material& m);
-  int Width() const { return width_; }
   // Lanes [0, count) from their point, normal and diffuse: colour and shadowRays. Lanes
   // up to the next multiple of the width are overwritten with lane 0's.
   void Shade(LocalLightLaneData& lanes, int count) const;

@@ -25,7 +25,7 @@ void WallLanes(benchmark::State& state) {
   const Scene& scene = CanonicalScene();
   const TerminalWallLanes lanes(scene.wall, *scene.light,
                                 Camera::GeometryFor(scene.wall, scene.camera, 256, 256), target);
-  RayLanes rays;
+  RayLanes rays{};
   for (std::size_t i = 0; i < RayLanes::kMax; ++i) {
     rays.px[i] = 128.0 + 0.1 * static_cast<double>(i);
     rays.py[i] = 100.0 + 0.05 * static_cast<double>(i);

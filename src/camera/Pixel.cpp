@@ -43,11 +43,11 @@ PixelPass Pixel::TracePass(const Camera& camera, int x, int y, int rays,
 
 template <class TraceGroup>
 PixelPass Pixel::TraceGroups(int rays, RayTree& trees, const std::atomic<bool>* cancel,
-                             TraceGroup traceGroup) {
+                             TraceGroup traceGroup, int groupRays) {
   PixelPass pass;
   trees.Clear();
-  for (int first = 0; first < rays; first += RayLanes::kMax) {
-    int count = std::min(RayLanes::kMax, rays - first);
+  for (int first = 0; first < rays; first += groupRays) {
+    int count = std::min(groupRays, rays - first);
     for (int i = first; i < first + count; ++i) {
       if (Cancelled(cancel, i)) {
         pass.complete = false;
@@ -66,7 +66,7 @@ PixelPass Pixel::TracePassInLanes(const Camera& camera, int x, int y, int rays,
                                   RenderStats& stats, bool keepTrees,
                                   const std::atomic<bool>* cancel) const {
   const double importance = 1.0 / rays;
-  RayLanes lanes;
+  RayLanes lanes{};
   std::array<std::array<double, kSobolLanesMax>, 4> numbers{};
   const SimdTarget target = integrator.LaneTarget();
   static_assert(RayLanes::kMax == kSobolLanesMax);
@@ -105,9 +105,12 @@ PixelPass Pixel::TracePassWithFirstHits(const Camera& camera, int x, int y, int 
                                         const Integrator& integrator, Sampler& sampler,
                                         RayTree& trees, RenderStats& stats, bool keepTrees,
                                         const std::atomic<bool>* cancel) const {
+  if (!keepTrees && integrator.TracesGroupsFromLanes()) {
+    return TracePassInGroups(camera, x, y, rays, integrator, sampler, trees, stats, cancel);
+  }
   const double importance = 1.0 / rays;
-  RayLanes lanes;
-  std::array<std::array<double, kSobolLanesMax>, 4> numbers{};
+  RayLanes lanes{};
+  Sampler::FirstGroups numbers{};
   const SimdTarget target = integrator.LaneTarget();
   return TraceGroups(rays, trees, cancel, [&](int first, int count, PixelPass& pass) {
     // The sampler's first numbers of these rays and their first hits, in lanes; then
@@ -118,23 +121,6 @@ PixelPass Pixel::TracePassWithFirstHits(const Camera& camera, int x, int y, int 
       lanes.py[lane] = y + numbers[1][lane];
     }
     integrator.FindFirstHits(lanes, count);
-    if (!keepTrees && integrator.TracesGroupsFromLanes()) {
-      // The group's rays together, then their colours into the sum in ray order.
-      trees.Clear();
-      std::array<Colour, RayLanes::kMax> colours;
-      for (std::size_t j = 0; j < static_cast<std::size_t>(count); ++j) {
-        trees.Add(CameraRay(
-            camera.Eye(), vec3(lanes.direction[0][j], lanes.direction[1][j], lanes.direction[2][j]),
-            importance));
-        ++stats.cameraRays;
-        if (lanes.closest[j] >= 0.0) ++stats.laneRays;
-      }
-      integrator.TraceGroupFromLanes(trees, 0, count, shaft_, lanes, stats, colours.data());
-      for (std::size_t j = 0; j < static_cast<std::size_t>(count); ++j) {
-        AddSample(colours[j], pass, stats);
-      }
-      return;
-    }
     for (int lane = 0; lane < count; ++lane) {
       const auto j = static_cast<std::size_t>(lane);
       if (!keepTrees) trees.Clear();
@@ -148,6 +134,49 @@ PixelPass Pixel::TracePassWithFirstHits(const Camera& camera, int x, int y, int 
                 stats);
     }
   });
+}
+
+PixelPass Pixel::TracePassInGroups(const Camera& camera, int x, int y, int rays,
+                                   const Integrator& integrator, Sampler& sampler, RayTree& trees,
+                                   RenderStats& stats, const std::atomic<bool>* cancel) const {
+  const double importance = 1.0 / rays;
+  constexpr int kSets = Integrator::kMaxGroupRays / RayLanes::kMax;
+  std::array<RayLanes, kSets> lanes;
+  std::array<Sampler::FirstGroups, kSets> numbers;
+  std::array<Colour, Integrator::kMaxGroupRays> colours;
+  const SimdTarget target = integrator.LaneTarget();
+  const auto traceGroup = [&](int first, int count, PixelPass& pass) {
+    // The sampler's first numbers of these rays and their first hits, in lanes of
+    // RayLanes::kMax; then the group's rays together, their colours into the sum in ray
+    // order.
+    for (int set = 0; set * RayLanes::kMax < count; ++set) {
+      const auto s = static_cast<std::size_t>(set);
+      const int setFirst = set * RayLanes::kMax;
+      const int n = std::min(RayLanes::kMax, count - setFirst);
+      sampler.FirstGroupsInLanes(first + setFirst, n, target, numbers[s]);
+      for (std::size_t lane = 0; lane < static_cast<std::size_t>(n); ++lane) {
+        lanes[s].px[lane] = x + numbers[s][0][lane];
+        lanes[s].py[lane] = y + numbers[s][1][lane];
+      }
+      integrator.FindFirstHits(lanes[s], n);
+    }
+    trees.Clear();
+    for (int i = 0; i < count; ++i) {
+      const RayLanes& set = lanes[static_cast<std::size_t>(i / RayLanes::kMax)];
+      const auto j = static_cast<std::size_t>(i % RayLanes::kMax);
+      trees.Add(CameraRay(camera.Eye(),
+                          vec3(set.direction[0][j], set.direction[1][j], set.direction[2][j]),
+                          importance));
+      ++stats.cameraRays;
+      if (set.closest[j] >= 0.0) ++stats.laneRays;
+    }
+    integrator.TraceGroupFromLanes(trees, 0, count, shaft_, lanes.data(), sampler, first,
+                                   numbers.data(), stats, colours.data());
+    for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
+      AddSample(colours[i], pass, stats);
+    }
+  };
+  return TraceGroups(rays, trees, cancel, traceGroup, integrator.GroupRays());
 }
 
 }  // namespace glint

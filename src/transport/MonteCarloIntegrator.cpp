@@ -1,5 +1,6 @@
 #include "glint/transport/MonteCarloIntegrator.hpp"
 
+#include <array>
 #include <stdexcept>
 
 #include "glint/sampling/Sampling.hpp"
@@ -43,6 +44,7 @@ MonteCarloIntegrator::MonteCarloIntegrator(const Scene& scene, MonteCarloOptions
       lanes_.emplace(scene_.wall, light_, *camera, options_.simd);
     }
     hitLanes_.emplace(scene_, *camera, /*withAreaLight=*/true, options_.simd);
+    secondaryLanes_.emplace(scene_, /*withAreaLight=*/true, options_.simd);
   }
 }
 
@@ -52,6 +54,93 @@ Colour MonteCarloIntegrator::TraceFromLane(RayTree& tree, std::uint32_t root,
   // A pixel that is not roomOnly (FirstHitLanes): Trace's path, from the lanes' hit if known.
   Hit hit;
   return TraceNode(tree, root, root, sampler, stats, shaft, hitLanes_->Known(lanes, lane, hit));
+}
+
+void MonteCarloIntegrator::TraceGroupFromLanes(RayTree& trees, std::uint32_t firstRoot, int count,
+                                               const PixelShaft& shaft, const RayLanes* lanes,
+                                               Sampler& sampler, int firstSample,
+                                               const Sampler::FirstGroups* groups,
+                                               RenderStats& stats, Colour* colours) const {
+  constexpr std::size_t kSlots = RayLanes::kMax;
+  // A slot traces one path at a time, in a sampler of its own (a sample's numbers depend
+  // on its index and dimensions alone, Sobol's padding on a stream of the sample's own),
+  // and takes the group's next camera ray when its path ends, so the lanes stay full.
+  std::array<Sampler, kSlots> samplers{sampler, sampler, sampler, sampler,
+                                       sampler, sampler, sampler, sampler};
+  // A slot's rays still to trace, last on top, with their node numbers: the stack
+  // TraceNode's recursion keeps, so the path's tree is visited in the same order.
+  struct Pending {
+    std::uint32_t index, node;
+  };
+  std::array<std::array<Pending, kGroupStack>, kSlots> stacks;
+  std::array<int, kSlots> top{};
+  std::array<std::uint32_t, kSlots> nodes{};  // the slot's tree's nodes so far
+  std::array<std::uint32_t, kSlots> roots{};
+  const auto shade = [&](std::size_t slot, Pending p, const Hit& hit, const PixelShaft& s) {
+    Colour local;
+    const std::uint32_t kept =
+        ShadeNode(trees, p.index, p.node, roots[slot], hit, local, samplers[slot], stats, s);
+    const std::uint32_t first = trees[p.index].firstChild;
+    for (std::uint32_t i = kept; i-- > 0;) {
+      stacks[slot][static_cast<std::size_t>(top[slot]++)] = {first + i, nodes[slot] + i};
+    }
+    nodes[slot] += kept;
+  };
+  // A free slot starts the next camera rays, from the first-hit lanes' hits (or FindHit's,
+  // where the lanes handed a ray back), with what the pixel's shaft knows, until one goes on.
+  int next = 0;
+  std::size_t lastSlot = 0;  // the slot of the group's last ray
+  const auto refill = [&](std::size_t slot) {
+    while (top[slot] == 0 && next < count) {
+      const int i = next++;
+      const auto set = static_cast<std::size_t>(i / RayLanes::kMax);
+      const int lane = i % RayLanes::kMax;
+      samplers[slot].StartSampleWith(firstSample + i, groups[set], static_cast<std::size_t>(lane));
+      roots[slot] = firstRoot + static_cast<std::uint32_t>(i);
+      Hit hit;
+      if (hitLanes_->Known(lanes[set], lane, hit) == nullptr) {
+        FindHit(trees[roots[slot]], shaft, hit);
+      }
+      nodes[slot] = 1;
+      lastSlot = slot;
+      shade(slot, {roots[slot], 0}, hit, shaft);
+    }
+  };
+  // Then a step at a time: the next ray of every slot whose path goes on.
+  RayLanes step{};
+  std::array<std::size_t, kSlots> slotOf{};
+  std::array<Pending, kSlots> pending{};
+  for (;;) {
+    int n = 0;
+    for (std::size_t slot = 0; slot < kSlots; ++slot) {
+      refill(slot);
+      if (top[slot] == 0) continue;
+      const auto j = static_cast<std::size_t>(n++);
+      slotOf[j] = slot;
+      pending[j] = stacks[slot][static_cast<std::size_t>(--top[slot])];
+      const Ray& ray = trees[pending[j].index];
+      for (std::size_t a = 0; a < 3; ++a) {
+        step.start[a][j] = ray.start[static_cast<glm::length_t>(a)];
+        step.direction[a][j] = ray.direction[static_cast<glm::length_t>(a)];
+      }
+    }
+    if (n == 0) break;
+    secondaryLanes_->Trace(step, n);
+    for (int j = 0; j < n; ++j) {
+      const auto k = static_cast<std::size_t>(j);
+      Hit hit;
+      if (step.closest[k] < 0.0) {
+        FindHit(trees[pending[k].index], PixelShaft{}, hit);
+      } else {
+        secondaryLanes_->FillHit(step, j, hit);
+      }
+      shade(slotOf[k], pending[k], hit, PixelShaft{});
+    }
+  }
+  trees.AddChildColours(firstRoot);  // in TraceNode's order
+  for (int i = 0; i < count; ++i)
+    colours[i] = trees[firstRoot + static_cast<std::uint32_t>(i)].colour;
+  sampler = samplers[lastSlot];
 }
 
 void MonteCarloIntegrator::TraceLanes(RayLanes& lanes, int count, const PixelShaft& shaft,
@@ -194,26 +283,48 @@ void MonteCarloIntegrator::SetCausticRatios(const Ray& ray, const Hit& hit, vec3
   }
 }
 
-Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::uint32_t root,
-                                       Sampler& sampler, RenderStats& stats, PixelShaft shaft,
-                                       const Hit* known) const {
-  // A reference, not a copy (copying the node cost ~10% of the render): valid until
-  // AddChildren below may move the nodes; what is needed after that is read first.
-  const Ray& ray = tree[index];
-  const std::uint32_t node = index - root;  // its number in the tree: its dimensions
-  Hit hit;
-  if (known != nullptr) {
-    hit = *known;
-  } else if (shaft.roomOnly) {
+void MonteCarloIntegrator::FindHit(const Ray& ray, const PixelShaft& shaft, Hit& hit) const {
+  if (shaft.roomOnly) {
     scene_.IntersectRoom(ray.start, ray.direction, shaft.side, hit);
   } else {
     scene_.Intersect(ray.start, ray.direction, hit, /*withAreaLight=*/true);
   }
+}
+
+Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::uint32_t root,
+                                       Sampler& sampler, RenderStats& stats, PixelShaft shaft,
+                                       const Hit* known) const {
+  Hit hit;
+  if (known != nullptr) {
+    hit = *known;
+  } else {
+    FindHit(tree[index], shaft, hit);
+  }
+  Colour colour;
+  const std::uint32_t kept =
+      ShadeNode(tree, index, index - root, root, hit, colour, sampler, stats, shaft);
+  const std::uint32_t first = tree[index].firstChild;
+  for (std::uint32_t i = 0; i < kept; ++i) {
+    const Colour c = TraceNode(tree, first + i, root, sampler, stats);
+    colour += tree[first + i].weight * c;  // C_R = L_local + sum W_i C_i
+  }
+  tree[index].colour = colour;
+  return colour;
+}
+
+std::uint32_t MonteCarloIntegrator::ShadeNode(RayTree& tree, std::uint32_t index,
+                                              std::uint32_t node, std::uint32_t root,
+                                              const Hit& hit, Colour& local, Sampler& sampler,
+                                              RenderStats& stats, const PixelShaft& shaft) const {
+  // A reference, not a copy (copying the node cost ~10% of the render): valid until
+  // AddChildren below may move the nodes; what is needed after that is read first.
+  const Ray& ray = tree[index];
   if (!(hit.t < kInfinity)) {
     tree[index].end = ray.start;
     tree[index].final = true;  // out through the open front: radiance 0
     tree[index].colour = Colour(0.0);
-    return Colour(0.0);
+    local = Colour(0.0);
+    return 0;
   }
   tree[index].end = hit.point;
   tree[index].object = hit.object;
@@ -221,9 +332,9 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::
     const Colour c = EmissionWeight(ray, hit.point) * light_.Le(-ray.direction);
     tree[index].final = true;
     tree[index].colour = c;
-    return c;
+    local = c;
+    return 0;
   }
-
   const Material& m = *hit.material;
   const vec3 n = FacingNormal(ray.direction, hit.normal);
   Colour colour(0.0);
@@ -232,7 +343,8 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::
   if (m.type == MaterialType::Lambertian) {
     // The design's terminal walls end most paths: no child, nothing else to do.
     if (options_.walls == MonteCarloOptions::Walls::Terminal) {
-      return EndAtTerminalWall(tree[index], hit, n, node, sampler, stats, shaft.areaLightVisible);
+      local = EndAtTerminalWall(tree[index], hit, n, node, sampler, stats, shaft.areaLightVisible);
+      return 0;
     }
     colour += DirectLight(hit, ray.direction, n, 0.0, sampler.Get2D(SampleDimension::Light(node)),
                           stats, shaft.areaLightVisible);
@@ -306,14 +418,9 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::
         break;
     }
   }
-  for (int i = 0; i < kept; ++i) {
-    const std::uint32_t ci = first + static_cast<std::uint32_t>(i);
-    const Colour c = TraceNode(tree, ci, root, sampler, stats);
-    colour += tree[ci].weight * c;  // C_R = L_local + sum W_i C_i
-  }
   tree[index].final = kept == 0;
   tree[index].colour = colour;
-  return colour;
+  local = colour;
+  return static_cast<std::uint32_t>(kept);
 }
-
 }  // namespace glint

@@ -284,22 +284,30 @@ void WhittedIntegrator::ShadeBatch(RayTree& trees, std::uint32_t first, int n, c
 }
 
 void WhittedIntegrator::TraceGroupFromLanes(RayTree& trees, std::uint32_t firstRoot, int count,
-                                            const PixelShaft& shaft, const RayLanes& lanes,
+                                            const PixelShaft& shaft, const RayLanes* laneSets,
+                                            Sampler& /*sampler*/, int /*firstSample*/,
+                                            const Sampler::FirstGroups* /*groups*/,
                                             RenderStats& stats, Colour* colours) const {
   std::array<Hit, RayLanes::kMax> hits;
   LocalLightLaneData lights;
   SpecularLaneData specular;
-  // The camera rays, from the first-hit lanes' hits (or Scene::Intersect's, where the
-  // lanes handed a ray back), with what the pixel's shaft knows.
-  for (int lane = 0; lane < count; ++lane) {
-    const std::uint32_t root = firstRoot + static_cast<std::uint32_t>(lane);
-    Hit& hit = hits[static_cast<std::size_t>(lane)];
-    if (hitLanes_->Known(lanes, lane, hit) == nullptr) FindHit(trees, root, shaft, hit);
+  // The camera rays, kMax at a time, from the first-hit lanes' hits (or Scene::Intersect's,
+  // where the lanes handed a ray back), with what the pixel's shaft knows.
+  for (int setFirst = 0; setFirst < count; setFirst += RayLanes::kMax) {
+    const RayLanes& lanes = laneSets[static_cast<std::size_t>(setFirst / RayLanes::kMax)];
+    const int n = std::min(RayLanes::kMax, count - setFirst);
+    const std::uint32_t first = firstRoot + static_cast<std::uint32_t>(setFirst);
+    for (int lane = 0; lane < n; ++lane) {
+      Hit& hit = hits[static_cast<std::size_t>(lane)];
+      if (hitLanes_->Known(lanes, lane, hit) == nullptr) {
+        FindHit(trees, first + static_cast<std::uint32_t>(lane), shaft, hit);
+      }
+    }
+    ShadeBatch(trees, first, n, hits.data(), shaft, lights, specular, stats);
   }
-  ShadeBatch(trees, firstRoot, count, hits.data(), shaft, lights, specular, stats);
   // Then a level at a time: the children a level makes are the next level, contiguous
   // in the arena after it, and their hits are found W at a time.
-  RayLanes level;
+  RayLanes level{};
   auto begin = static_cast<std::uint32_t>(firstRoot + static_cast<std::uint32_t>(count));
   while (begin < trees.Size()) {
     const auto end = static_cast<std::uint32_t>(trees.Size());
@@ -325,18 +333,7 @@ void WhittedIntegrator::TraceGroupFromLanes(RayTree& trees, std::uint32_t firstR
     }
     begin = end;
   }
-  // Colours bottom-up: children come after their parents in the arena, so a node's are
-  // final when it is reached from the end; C_R = L_local + sum W_i C_i in TraceNode's order.
-  for (auto i = static_cast<std::uint32_t>(trees.Size()); i-- > firstRoot;) {
-    Ray& ray = trees[i];
-    if (ray.childCount == 0) continue;
-    Colour colour = ray.colour;
-    for (std::uint32_t c = 0; c < ray.childCount; ++c) {
-      const Ray& child = trees[ray.firstChild + c];
-      colour += child.weight * child.colour;
-    }
-    ray.colour = colour;
-  }
+  trees.AddChildColours(firstRoot);  // in TraceNode's order
   for (int lane = 0; lane < count; ++lane) {
     colours[lane] = trees[firstRoot + static_cast<std::uint32_t>(lane)].colour;
   }

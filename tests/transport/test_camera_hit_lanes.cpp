@@ -30,7 +30,7 @@ Counts CompareWithScalar(const Scene& scene, SimdTarget target, int size, int gr
   const CameraHitLanes hitLanes(scene, camera, /*withAreaLight=*/true, target);
   Pcg32 rng(7, 11);
   Counts n;
-  RayLanes lanes;
+  RayLanes lanes{};
   for (int g = 0; g < groups; ++g) {
     const int count = 1 + g % RayLanes::kMax;
     for (std::size_t j = 0; j < static_cast<std::size_t>(count); ++j) {
@@ -93,7 +93,7 @@ TEST(CameraHitLanes, LeavesFewRaysToTheScalarSearch) {
   const Pinhole camera = Camera::GeometryFor(scene.wall, scene.camera, 256, 256);
   const CameraHitLanes hitLanes(scene, camera, true, SimdTarget::Auto);
   Pcg32 rng(3, 5);
-  RayLanes lanes;
+  RayLanes lanes{};
   int rare = 0;
   const int groups = 2000;
   for (int g = 0; g < groups; ++g) {

@@ -67,7 +67,7 @@ Counts CompareWithScalar(const Scene& scene, SimdTarget target, bool withAreaLig
   const HitLanes hitLanes(scene, withAreaLight, target);
   Pcg32 rng(7, 13);
   Counts n;
-  RayLanes lanes;
+  RayLanes lanes{};
   for (int g = 0; g < groups; ++g) {
     const int count = 1 + g % RayLanes::kMax;
     for (std::size_t j = 0; j < static_cast<std::size_t>(count); ++j) {

@@ -55,14 +55,21 @@ class Integrator {
                                RenderStats& stats) const {
     return Trace(tree, root, shaft, sampler, stats);
   }
-  // A whole group of first-hit lanes at once, for an integrator that draws no numbers
-  // after the camera ray's (Whitted): tree[firstRoot + lane] is lane `lane`'s camera ray,
-  // for lanes [0, count); writes into colours[lane] what TraceFromLane would return for
-  // it, to the bit, building each ray's tree (the trees' nodes interleave in the arena).
+  // A whole group of first-hit lanes at once, up to GroupRays() (a multiple of
+  // RayLanes::kMax, at most kMaxGroupRays) rays: tree[firstRoot + i] is ray i's camera ray,
+  // for i in [0, count), sample firstSample + i of `sampler`'s pass, lane i % kMax of
+  // lanes[i / kMax], its first numbers groups[i / kMax][.][i % kMax]
+  // (Sampler::StartSampleWith); writes into colours[i] what TraceFromLane would return
+  // for it, to the bit, building each ray's tree (the trees' nodes interleave in the
+  // arena), and leaves `sampler` as TraceFromLane would have after the last ray.
+  static constexpr int kMaxGroupRays = 64;
   virtual bool TracesGroupsFromLanes() const { return false; }
+  virtual int GroupRays() const { return RayLanes::kMax; }
   virtual void TraceGroupFromLanes(RayTree& /*trees*/, std::uint32_t /*firstRoot*/, int /*count*/,
-                                   const PixelShaft& /*shaft*/, const RayLanes& /*lanes*/,
-                                   RenderStats& /*stats*/, Colour* /*colours*/) const {}
+                                   const PixelShaft& /*shaft*/, const RayLanes* /*lanes*/,
+                                   Sampler& /*sampler*/, int /*firstSample*/,
+                                   const Sampler::FirstGroups* /*groups*/, RenderStats& /*stats*/,
+                                   Colour* /*colours*/) const {}
 
   // The shadow rays it casts, for Camera::PrepareShafts.
   virtual PixelShaft::Lights ShadowLights() const = 0;

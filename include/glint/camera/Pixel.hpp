@@ -119,12 +119,17 @@ class Pixel {
                                    const Integrator& integrator, Sampler& sampler, RayTree& trees,
                                    RenderStats& stats, bool keepTrees,
                                    const std::atomic<bool>* cancel) const;
-  // The two lane passes' loop: a pass of `rays` rays in groups of RayLanes::kMax from a
-  // cleared `trees`, traceGroup(first, count, pass) for each, until a cancel (which clears
+  // The same, for an integrator that traces groups of those rays at once
+  // (Integrator::TracesGroupsFromLanes): the same bits.
+  PixelPass TracePassInGroups(const Camera& camera, int x, int y, int rays,
+                              const Integrator& integrator, Sampler& sampler, RayTree& trees,
+                              RenderStats& stats, const std::atomic<bool>* cancel) const;
+  // The lane passes' loop: a pass of `rays` rays in groups of `groupRays` from a cleared
+  // `trees`, traceGroup(first, count, pass) for each, until a cancel (which clears
   // pass.complete and ends the group before the ray it falls on).
   template <class TraceGroup>
   static PixelPass TraceGroups(int rays, RayTree& trees, const std::atomic<bool>* cancel,
-                               TraceGroup traceGroup);
+                               TraceGroup traceGroup, int groupRays = RayLanes::kMax);
   // A camera ray's tree root: from the eye along unit `direction`, importance 1/N.
   static Ray CameraRay(vec3 eye, vec3 direction, double importance) {
     Ray ray;

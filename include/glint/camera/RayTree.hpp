@@ -34,6 +34,23 @@ class alignas(64) RayTree {
     return first;
   }
 
+  // For trees built breadth-first or in lock-step, whose nodes [first, Size()) hold their
+  // local light as their colour: adds each node's children's W_i C_i to it, C_R = L_local
+  // + sum W_i C_i, child by child in order as a recursion sums them. Children come after
+  // their parents in the arena, so a node's are final when it is reached from the end.
+  void AddChildColours(std::uint32_t first) {
+    for (auto i = static_cast<std::uint32_t>(nodes_.size()); i-- > first;) {
+      Ray& ray = nodes_[i];
+      if (ray.childCount == 0) continue;
+      Colour colour = ray.colour;
+      for (std::uint32_t c = 0; c < ray.childCount; ++c) {
+        const Ray& child = nodes_[ray.firstChild + c];
+        colour += child.weight * child.colour;
+      }
+      ray.colour = colour;
+    }
+  }
+
   Ray& operator[](std::uint32_t i) { return nodes_[i]; }
   const Ray& operator[](std::uint32_t i) const { return nodes_[i]; }
   std::size_t Size() const { return nodes_.size(); }

@@ -55,6 +55,10 @@ struct Sample2 {
 
 class Sampler {
  public:
+  // The first dimension groups of up to kSobolLanesMax samples, out[c][j] for sample
+  // first + j (FirstGroupsInLanes).
+  using FirstGroups = std::array<std::array<double, kSobolLanesMax>, 4>;
+
   // The sampler of pixel `pixelIndex` for the pass `pass` of a render with `seed`, whose
   // `samplesInPass` samples are the pixel's samples firstSample, firstSample + 1, ...
   Sampler(SamplerKind kind, std::uint64_t seed, std::uint64_t pixelIndex, std::uint32_t pass,

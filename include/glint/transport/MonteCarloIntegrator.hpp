@@ -13,6 +13,7 @@
 #include "glint/scene/Scene.hpp"
 #include "glint/transport/CameraHitLanes.hpp"
 #include "glint/transport/Fresnel.hpp"
+#include "glint/transport/HitLanes.hpp"
 #include "glint/transport/LightTracer.hpp"
 #include "glint/transport/MirroredLight.hpp"
 #include "glint/transport/MonteCarloOptions.hpp"
@@ -65,6 +66,21 @@ class MonteCarloIntegrator final : public Integrator {
   Colour TraceFromLane(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,
                        const RayLanes& lanes, int lane, Sampler& sampler,
                        RenderStats& stats) const override;
+  // And their paths in lock-step, up to 64 camera rays a group, each path still depth
+  // first: 8 slots each trace one path, taking the group's next camera ray when theirs
+  // ends; at every step each slot takes the next ray of its own depth-first order, and
+  // those rays find their hits W at a time (HitLanes). Each path's nodes are numbered, and
+  // its sample's numbers drawn, as TraceNode's recursion does them, so the trees and
+  // colours are the same to the bit. With at most two children a node (the stack's bound).
+  bool TracesGroupsFromLanes() const override {
+    return secondaryLanes_.has_value() && options_.branches <= 2 &&
+           options_.maxDepth <= kGroupStack;
+  }
+  int GroupRays() const override { return kMaxGroupRays; }
+  void TraceGroupFromLanes(RayTree& trees, std::uint32_t firstRoot, int count,
+                           const PixelShaft& shaft, const RayLanes* lanes, Sampler& sampler,
+                           int firstSample, const Sampler::FirstGroups* groups, RenderStats& stats,
+                           Colour* colours) const override;
   int LightPathsPerRay() const override { return tracer_ ? LightTracer::kPathsPerRay : 0; }
   void TraceLightPaths(Camera& camera, Sampler& sampler, int count,
                        RenderStats& stats) const override {
@@ -135,10 +151,23 @@ class MonteCarloIntegrator final : public Integrator {
   Colour EndAtTerminalWall(Ray& ray, const Hit& hit, vec3 n, std::uint32_t node, Sampler& sampler,
                            RenderStats& stats, bool unoccluded) const;
 
+  // The rays a lock-step slot has still to trace: with at most two children a node, one
+  // sibling waiting at each depth 1 .. maxDepth - 2 and two at the deepest, maxDepth at most.
+  static constexpr int kGroupStack = 64;
+
   // `shaft`: what is known in advance of this ray (the camera ray's pixel), or nothing;
   // `known`: its hit, found already (CameraHitLanes; t infinite: it met nothing), or null.
   Colour TraceNode(RayTree& tree, std::uint32_t index, std::uint32_t root, Sampler& sampler,
                    RenderStats& stats, PixelShaft shaft = {}, const Hit* known = nullptr) const;
+  // The hit of `ray`, as TraceNode finds it without a known hit.
+  void FindHit(const Ray& ray, const PixelShaft& shaft, Hit& hit) const;
+  // What TraceNode does at tree[index] (node `node` of the tree whose root is tree[root])
+  // once its hit is known, but for its children's colours: its end, object and final
+  // flag, its local light into `local` (and into its colour), its children after Russian
+  // roulette (from tree[index].firstChild); returns how many it kept.
+  std::uint32_t ShadeNode(RayTree& tree, std::uint32_t index, std::uint32_t node,
+                          std::uint32_t root, const Hit& hit, Colour& local, Sampler& sampler,
+                          RenderStats& stats, const PixelShaft& shaft) const;
   // How much of the light's emission a ray that hit it counts: 1, an MIS weight, or 0
   // where next-event estimation has counted it already.
   double EmissionWeight(const Ray& ray, vec3 lightPoint) const;
@@ -158,6 +187,7 @@ class MonteCarloIntegrator final : public Integrator {
   std::optional<LightTracer> tracer_;  // Caustics::Light
   std::optional<TerminalWallLanes> lanes_;  // Walls::Terminal, with the camera
   std::optional<CameraHitLanes> hitLanes_;  // with the camera
+  std::optional<HitLanes> secondaryLanes_;  // with the camera, from 4 lanes
 };
 
 // Inline: the walls' hits, most of a render, take this path.

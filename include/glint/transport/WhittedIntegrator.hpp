@@ -47,11 +47,15 @@ class WhittedIntegrator final : public Integrator {
   Colour TraceFromLane(RayTree& tree, std::uint32_t root, const PixelShaft& shaft,
                        const RayLanes& lanes, int lane, Sampler& sampler,
                        RenderStats& stats) const override;
-  // And their trees breadth-first, a level at a time, each level's hits in lanes
-  // (HitLanes): the same trees and colours as TraceNode's depth-first recursion.
+  // And their trees breadth-first, up to 64 camera rays' at once, a level at a time, each
+  // level's hits in lanes (HitLanes): the same trees and colours as TraceNode's
+  // depth-first recursion.
   bool TracesGroupsFromLanes() const override { return secondaryLanes_.has_value(); }
+  int GroupRays() const override { return kMaxGroupRays; }
+  // (Whitted draws no numbers after the pixel point: the sampler is not used.)
   void TraceGroupFromLanes(RayTree& trees, std::uint32_t firstRoot, int count,
-                           const PixelShaft& shaft, const RayLanes& lanes, RenderStats& stats,
+                           const PixelShaft& shaft, const RayLanes* lanes, Sampler& sampler,
+                           int firstSample, const Sampler::FirstGroups* groups, RenderStats& stats,
                            Colour* colours) const override;
 
   // The local term at a hit seen along direction d: for every visible point light of

@@ -10,6 +10,7 @@
 #include <hwy/highway.h>
 
 #include "glint/transport/CameraWallLanes-inl.h"
+#include "glint/transport/ClosestHitLanes-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace glint {
@@ -92,69 +93,32 @@ void FindHitsIn(D d, const HitLaneConstants& k, RayLanes& lanes, int count) {
     V face = wallFace;
 
     // Sphere::Nearer, each sphere in turn (Roots with f = eye - centre).
+    ClosestSoFar<V> closest{t, winner, index, face};
+    const V dirs[3] = {dx, dy, dz};
     for (std::size_t s = 0; s < k.spheres.size(); ++s) {
       const HitLaneConstants::SphereTerms& c = k.spheres[s];
-      const V fx = set(c.f[0]);
-      const V fy = set(c.f[1]);
-      const V fz = set(c.f[2]);
       V b;
-      const V discriminant = hn::Sub(set(c.r2), perpendicular2(fx, fy, fz, dx, dy, dz, b));
-      const auto misses = hn::Lt(discriminant, zero);
-      const V q = hn::Neg(hn::Add(b, hn::CopySign(hn::Sqrt(discriminant), b)));
-      rare = hn::Or(rare, hn::AndNot(misses, hn::Eq(q, zero)));
-      const V t0 = q;
-      const V t1 = hn::Div(set(c.c), q);
-      const auto swap = hn::Gt(t0, t1);
-      const V near = hn::IfThenElse(swap, t1, t0);
-      const V far = hn::IfThenElse(swap, t0, t1);
-      const V nearest = hn::IfThenElse(hn::Gt(near, zero), near, far);
-      const auto wins = hn::AndNot(misses, hn::And(hn::Gt(nearest, zero), hn::Lt(nearest, t)));
-      t = hn::IfThenElse(wins, nearest, t);
-      winner = hn::IfThenElse(wins, code(Scene::Closest::Sphere), winner);
-      index = hn::IfThenElse(wins, set(static_cast<double>(s)), index);
+      const V discriminant =
+          hn::Sub(set(c.r2), perpendicular2(set(c.f[0]), set(c.f[1]), set(c.f[2]), dx, dy, dz, b));
+      rare = hn::Or(rare, NearerSphere(d, b, discriminant, set(c.c), s, closest));
     }
 
-    // Cube::Nearer, each cube in turn: MissesBound, then IntersectSlabs.
+    // Cube::Nearer, each cube in turn: MissesBound, then IntersectSlabs (the planes' gaps
+    // from the eye computed once).
     for (std::size_t s = 0; s < k.cubes.size(); ++s) {
       const HitLaneConstants::CubeTerms& c = k.cubes[s];
-      const V fx = set(c.f[0]);
-      const V fy = set(c.f[1]);
-      const V fz = set(c.f[2]);
       V b;
-      const V p2 = perpendicular2(fx, fy, fz, dx, dy, dz, b);
-      const V r = set(c.boundRadius);
-      const auto missesBound =
-          hn::Or(hn::Gt(p2, set(c.boundRadius2)),
-                 hn::Or(hn::Lt(hn::Add(hn::Neg(b), r), zero), hn::Gt(hn::Sub(hn::Neg(b), r), t)));
-      V tNear = set(-kInfinity);
-      V tFar = set(kInfinity);
-      V nearFace = set(-1.0);
-      V farFace = set(-1.0);
-      const V dirs[3] = {dx, dy, dz};
-      for (std::size_t a = 0; a < 3; ++a) {
-        const V t0 = hn::Div(set(c.low[a]), dirs[a]);
-        const V t1 = hn::Div(set(c.high[a]), dirs[a]);
-        const auto backward = hn::Lt(dirs[a], zero);
-        const V lowFace = set(static_cast<double>(2 * a));
-        const V highFace = set(static_cast<double>(2 * a + 1));
-        const V enter = hn::IfThenElse(backward, t1, t0);
-        const V leave = hn::IfThenElse(backward, t0, t1);
-        const auto later = hn::Gt(enter, tNear);
-        tNear = hn::IfThenElse(later, enter, tNear);
-        nearFace = hn::IfThenElse(later, hn::IfThenElse(backward, highFace, lowFace), nearFace);
-        const auto sooner = hn::Lt(leave, tFar);
-        tFar = hn::IfThenElse(sooner, leave, tFar);
-        farFace = hn::IfThenElse(sooner, hn::IfThenElse(backward, lowFace, highFace), farFace);
-      }
-      const auto entering = hn::Gt(tNear, zero);
-      const V tHit = hn::IfThenElse(entering, tNear, tFar);
-      const auto wins = hn::AndNot(
-          missesBound, hn::And(hn::Le(tNear, tFar), hn::And(hn::Gt(tHit, zero), hn::Lt(tHit, t))));
-      t = hn::IfThenElse(wins, tHit, t);
-      winner = hn::IfThenElse(wins, code(Scene::Closest::Cube), winner);
-      index = hn::IfThenElse(wins, set(static_cast<double>(s)), index);
-      face = hn::IfThenElse(wins, hn::IfThenElse(entering, nearFace, farFace), face);
+      const V p2 = perpendicular2(set(c.f[0]), set(c.f[1]), set(c.f[2]), dx, dy, dz, b);
+      const CubeGaps<V> gaps{c.boundRadius,
+                             c.boundRadius2,
+                             {set(c.low[0]), set(c.low[1]), set(c.low[2])},
+                             {set(c.high[0]), set(c.high[1]), set(c.high[2])}};
+      NearerCube(d, b, p2, gaps, dirs, s, closest);
     }
+    t = closest.t;
+    winner = closest.winner;
+    index = closest.index;
+    face = closest.face;
 
     // The light: Rectangle::Intersect below t (1 + 1e-12) + 1e-15, winning ties.
     if (k.light) {

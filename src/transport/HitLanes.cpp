@@ -11,6 +11,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include "glint/transport/ClosestHitLanes-inl.h"
+
 HWY_BEFORE_NAMESPACE();
 namespace glint {
 namespace HWY_NAMESPACE {
@@ -85,25 +87,14 @@ void FindSecondaryHitsIn(D d, const HitLaneScene& k, RayLanes& lanes, int count)
     };
 
     // Sphere::Nearer, each sphere in turn.
+    ClosestSoFar<V> closest{t, winner, index, face};
     for (std::size_t n = 0; n < k.spheres.size(); ++n) {
       const HitLaneScene::SphereTerms& c = k.spheres[n];
       V fx, fy, fz, b;
       const V r2 = set(c.r2);
       const V discriminant = hn::Sub(r2, perpendicular2(c.centre, fx, fy, fz, b));
-      const auto misses = hn::Lt(discriminant, zero);
       const V cc = hn::Sub(dot(fx, fy, fz, fx, fy, fz), r2);
-      const V q = hn::Neg(hn::Add(b, hn::CopySign(hn::Sqrt(discriminant), b)));
-      rare = hn::Or(rare, hn::AndNot(misses, hn::Eq(q, zero)));
-      const V t0 = q;
-      const V t1 = hn::Div(cc, q);
-      const auto swap = hn::Gt(t0, t1);
-      const V near = hn::IfThenElse(swap, t1, t0);
-      const V far = hn::IfThenElse(swap, t0, t1);
-      const V nearest = hn::IfThenElse(hn::Gt(near, zero), near, far);
-      const auto wins = hn::AndNot(misses, hn::And(hn::Gt(nearest, zero), hn::Lt(nearest, t)));
-      t = hn::IfThenElse(wins, nearest, t);
-      winner = hn::IfThenElse(wins, code(Scene::Closest::Sphere), winner);
-      index = hn::IfThenElse(wins, set(static_cast<double>(n)), index);
+      rare = hn::Or(rare, NearerSphere(d, b, discriminant, cc, n, closest));
     }
 
     // Cube::Nearer, each cube in turn: MissesBound, then IntersectSlabs.
@@ -111,38 +102,17 @@ void FindSecondaryHitsIn(D d, const HitLaneScene& k, RayLanes& lanes, int count)
       const HitLaneScene::CubeTerms& c = k.cubes[n];
       V fx, fy, fz, b;
       const V p2 = perpendicular2(c.centre, fx, fy, fz, b);
-      const V r = set(c.boundRadius);
-      const auto missesBound =
-          hn::Or(hn::Gt(p2, set(c.boundRadius2)),
-                 hn::Or(hn::Lt(hn::Add(hn::Neg(b), r), zero), hn::Gt(hn::Sub(hn::Neg(b), r), t)));
-      V tNear = set(-kInfinity);
-      V tFar = infinity;
-      V nearFace = set(-1.0);
-      V farFace = set(-1.0);
+      CubeGaps<V> gaps{c.boundRadius, c.boundRadius2, {}, {}};
       for (std::size_t a = 0; a < 3; ++a) {
-        const V t0 = hn::Div(hn::Sub(set(c.low[a]), o[a]), dir[a]);
-        const V t1 = hn::Div(hn::Sub(set(c.high[a]), o[a]), dir[a]);
-        const auto backward = hn::Lt(dir[a], zero);
-        const V lowFace = set(static_cast<double>(2 * a));
-        const V highFace = set(static_cast<double>(2 * a + 1));
-        const V enter = hn::IfThenElse(backward, t1, t0);
-        const V leave = hn::IfThenElse(backward, t0, t1);
-        const auto later = hn::Gt(enter, tNear);
-        tNear = hn::IfThenElse(later, enter, tNear);
-        nearFace = hn::IfThenElse(later, hn::IfThenElse(backward, highFace, lowFace), nearFace);
-        const auto sooner = hn::Lt(leave, tFar);
-        tFar = hn::IfThenElse(sooner, leave, tFar);
-        farFace = hn::IfThenElse(sooner, hn::IfThenElse(backward, lowFace, highFace), farFace);
+        gaps.low[a] = hn::Sub(set(c.low[a]), o[a]);
+        gaps.high[a] = hn::Sub(set(c.high[a]), o[a]);
       }
-      const auto entering = hn::Gt(tNear, zero);
-      const V tHit = hn::IfThenElse(entering, tNear, tFar);
-      const auto wins = hn::AndNot(
-          missesBound, hn::And(hn::Le(tNear, tFar), hn::And(hn::Gt(tHit, zero), hn::Lt(tHit, t))));
-      t = hn::IfThenElse(wins, tHit, t);
-      winner = hn::IfThenElse(wins, code(Scene::Closest::Cube), winner);
-      index = hn::IfThenElse(wins, set(static_cast<double>(n)), index);
-      face = hn::IfThenElse(wins, hn::IfThenElse(entering, nearFace, farFace), face);
+      NearerCube(d, b, p2, gaps, dir, n, closest);
     }
+    t = closest.t;
+    winner = closest.winner;
+    index = closest.index;
+    face = closest.face;
 
     // The light: Rectangle::Intersect below t (1 + 1e-12) + 1e-15 (anything when nothing
     // else was met), winning ties.

@@ -12,8 +12,7 @@ bool Sphere::Intersect(vec3 origin, vec3 direction, double tMax, Hit& hit) const
   return true;
 }
 
-void Sphere::FillHit(vec3 origin, vec3 direction, double t, Hit& hit) const {
-  const vec3 outward = glm::normalize(origin + t * direction - centre_);
+void Sphere::FillHitAt(vec3 outward, double t, Hit& hit) const {
   hit.t = t;
   hit.normal = outward;
   hit.point = centre_ + radius_ * outward;  // back onto the surface

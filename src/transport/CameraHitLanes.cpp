@@ -93,14 +93,14 @@ void FindHitsIn(D d, const HitLaneConstants& k, RayLanes& lanes, int count) {
     V face = wallFace;
 
     // Sphere::Nearer, each sphere in turn (Roots with f = eye - centre).
-    ClosestSoFar<V> closest{t, winner, index, face};
+    ClosestSoFar<V> closest{t, winner, index, face, {zero, zero, zero}};
     const V dirs[3] = {dx, dy, dz};
     for (std::size_t s = 0; s < k.spheres.size(); ++s) {
       const HitLaneConstants::SphereTerms& c = k.spheres[s];
       V b;
       const V discriminant =
           hn::Sub(set(c.r2), perpendicular2(set(c.f[0]), set(c.f[1]), set(c.f[2]), dx, dy, dz, b));
-      rare = hn::Or(rare, NearerSphere(d, b, discriminant, set(c.c), s, closest));
+      rare = hn::Or(rare, NearerSphere(d, b, discriminant, set(c.c), s, c.centre, closest));
     }
 
     // Cube::Nearer, each cube in turn: MissesBound, then IntersectSlabs (the planes' gaps
@@ -148,6 +148,10 @@ void FindHitsIn(D d, const HitLaneConstants& k, RayLanes& lanes, int count) {
     hn::Store(dx, d, lanes.direction[0].data() + i);
     hn::Store(dy, d, lanes.direction[1].data() + i);
     hn::Store(dz, d, lanes.direction[2].data() + i);
+    if (!k.spheres.empty()) {
+      const V eye[3] = {set(k.camera.eye[0]), set(k.camera.eye[1]), set(k.camera.eye[2])};
+      StoreSphereNormals(d, eye, dirs, t, closest.centre, lanes, i);
+    }
     hn::Store(t, d, lanes.t.data() + i);
     hn::Store(hn::IfThenElse(rare, set(-1.0), winner), d, lanes.closest.data() + i);
     hn::Store(index, d, lanes.closestIndex.data() + i);
@@ -192,7 +196,7 @@ HitLaneConstants ConstantsOf(const Scene& scene, const Pinhole& camera, bool wit
   for (const Sphere& s : scene.spheres) {
     const vec3 f = o - s.Centre();
     const double r = s.Radius();
-    k.spheres.push_back({LaneArray(f), glm::dot(f, f) - r * r, r * r});
+    k.spheres.push_back({LaneArray(f), glm::dot(f, f) - r * r, r * r, LaneArray(s.Centre())});
   }
   for (const Cube& c : scene.cubes) {
     HitLaneConstants::CubeTerms t{};
@@ -243,6 +247,12 @@ bool CameraHitLanes::FillHit(const RayLanes& lanes, int i, Hit& hit) const {
   const auto winner = static_cast<Scene::Closest>(static_cast<int>(lanes.closest[j]));
   const int index = static_cast<int>(lanes.closestIndex[j]);
   int face = static_cast<int>(lanes.closestFace[j]);
+  if (winner == Scene::Closest::Sphere) {  // its normal from the lanes
+    scene_.spheres[static_cast<std::size_t>(index)].FillHitAt(
+        vec3(lanes.sphereNormal[0][j], lanes.sphereNormal[1][j], lanes.sphereNormal[2][j]),
+        lanes.t[j], hit);
+    return true;
+  }
   if (winner == Scene::Closest::Wall) face = Wall::SideOfFace(face);
   const vec3 direction(lanes.direction[0][j], lanes.direction[1][j], lanes.direction[2][j]);
   return scene_.FillClosest(winner, index, face, lanes.t[j], eye_, direction, hit);

@@ -87,14 +87,14 @@ void FindSecondaryHitsIn(D d, const HitLaneScene& k, RayLanes& lanes, int count)
     };
 
     // Sphere::Nearer, each sphere in turn.
-    ClosestSoFar<V> closest{t, winner, index, face};
+    ClosestSoFar<V> closest{t, winner, index, face, {zero, zero, zero}};
     for (std::size_t n = 0; n < k.spheres.size(); ++n) {
       const HitLaneScene::SphereTerms& c = k.spheres[n];
       V fx, fy, fz, b;
       const V r2 = set(c.r2);
       const V discriminant = hn::Sub(r2, perpendicular2(c.centre, fx, fy, fz, b));
       const V cc = hn::Sub(dot(fx, fy, fz, fx, fy, fz), r2);
-      rare = hn::Or(rare, NearerSphere(d, b, discriminant, cc, n, closest));
+      rare = hn::Or(rare, NearerSphere(d, b, discriminant, cc, n, c.centre, closest));
     }
 
     // Cube::Nearer, each cube in turn: MissesBound, then IntersectSlabs.
@@ -148,6 +148,7 @@ void FindSecondaryHitsIn(D d, const HitLaneScene& k, RayLanes& lanes, int count)
       winner = hn::IfThenElse(wins, code(Scene::Closest::Light), winner);
     }
 
+    if (!k.spheres.empty()) StoreSphereNormals(d, o, dir, t, closest.centre, lanes, i);
     hn::Store(t, d, lanes.t.data() + i);
     hn::Store(hn::IfThenElse(rare, set(-1.0), winner), d, lanes.closest.data() + i);
     hn::Store(index, d, lanes.closestIndex.data() + i);
@@ -223,6 +224,12 @@ bool HitLanes::FillHit(const RayLanes& lanes, int i, Hit& hit) const {
   const auto winner = static_cast<Scene::Closest>(static_cast<int>(lanes.closest[j]));
   const int index = static_cast<int>(lanes.closestIndex[j]);
   int face = static_cast<int>(lanes.closestFace[j]);
+  if (winner == Scene::Closest::Sphere) {  // its normal from the lanes
+    scene_.spheres[static_cast<std::size_t>(index)].FillHitAt(
+        vec3(lanes.sphereNormal[0][j], lanes.sphereNormal[1][j], lanes.sphereNormal[2][j]),
+        lanes.t[j], hit);
+    return true;
+  }
   if (winner == Scene::Closest::Wall) face = Wall::SideOfFace(face);
   const vec3 origin(lanes.start[0][j], lanes.start[1][j], lanes.start[2][j]);
   const vec3 direction(lanes.direction[0][j], lanes.direction[1][j], lanes.direction[2][j]);

@@ -33,6 +33,9 @@ struct RayLanes {
   // lanes leave the ray to Scene::Intersect (a rare case: a direction component 0, ...);
   // the sphere's or cube's index; the box face (IntersectSlabs' order) of the wall or cube.
   alignas(64) Lane t, closest, closestIndex, closestFace;
+  // Out, from the same lanes: where a sphere was met first, its unit outward normal at
+  // the hit (Sphere::FillHit's normalize(o + t d - centre)); elsewhere meaningless.
+  alignas(64) std::array<Lane, 3> sphereNormal;
   // In, for HitLanes (rays from any origin): each ray's origin; its unit direction is in
   // `direction`.
   alignas(64) std::array<Lane, 3> start;

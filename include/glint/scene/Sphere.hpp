@@ -22,7 +22,12 @@ class Sphere {
   // The two halves of Intersect, for the scene's closest-hit loop: Nearer lowers t to
   // this sphere's hit distance if that is in (0, t); FillHit then records the hit.
   bool Nearer(vec3 origin, vec3 direction, double& t) const;
-  void FillHit(vec3 origin, vec3 direction, double t, Hit& hit) const;
+  void FillHit(vec3 origin, vec3 direction, double t, Hit& hit) const {
+    FillHitAt(glm::normalize(origin + t * direction - centre_), t, hit);
+  }
+  // FillHit's record from the unit outward normal at the hit, normalize(o + t d - centre),
+  // found already (the closest-hit lanes).
+  void FillHitAt(vec3 outward, double t, Hit& hit) const;
 
   vec3 Centre() const { return centre_; }
   double Radius() const { return radius_; }

@@ -36,6 +36,7 @@ struct HitLaneConstants {
     std::array<double, 3> f;  // eye - centre
     double c;                 // dot(f, f) - r^2
     double r2;                // r^2
+    std::array<double, 3> centre;
   };
   std::vector<SphereTerms> spheres;
   struct CubeTerms {

@@ -16,7 +16,10 @@
 
 #include <hwy/highway.h>
 
+#include <array>
 #include <cstddef>
+
+#include "glint/camera/RayLanes.hpp"
 
 #include "glint/core/Math.hpp"
 #include "glint/scene/Scene.hpp"
@@ -30,15 +33,18 @@ namespace HWY_NAMESPACE {
 template <class V>
 struct ClosestSoFar {
   V t, winner, index, face;
+  V centre[3];  // the last sphere to win's centre
 };
 
-// Sphere::Nearer for sphere number n, from Roots' b = f.d, discriminant r^2 - |f - b d|^2
-// and c = |f|^2 - r^2: lowers t where the nearest root ahead is closer. Returns the lanes
-// that Roots' rare case (q = 0) leaves to the scalar search.
+// Sphere::Nearer for sphere number n, centred at `centre`, from Roots' b = f.d,
+// discriminant r^2 - |f - b d|^2 and c = |f|^2 - r^2: lowers t where the nearest root
+// ahead is closer. Returns the lanes that Roots' rare case (q = 0) leaves to the scalar
+// search.
 template <class D>
 HWY_INLINE hwy::HWY_NAMESPACE::Mask<D> NearerSphere(D d, hwy::HWY_NAMESPACE::Vec<D> b,
                                                     hwy::HWY_NAMESPACE::Vec<D> discriminant,
                                                     hwy::HWY_NAMESPACE::Vec<D> c, std::size_t n,
+                                                    const std::array<double, 3>& centre,
                                                     ClosestSoFar<hwy::HWY_NAMESPACE::Vec<D>>& s) {
   namespace hn = hwy::HWY_NAMESPACE;
   const auto zero = hn::Zero(d);
@@ -56,7 +62,33 @@ HWY_INLINE hwy::HWY_NAMESPACE::Mask<D> NearerSphere(D d, hwy::HWY_NAMESPACE::Vec
   s.winner =
       hn::IfThenElse(wins, hn::Set(d, static_cast<double>(Scene::Closest::Sphere)), s.winner);
   s.index = hn::IfThenElse(wins, hn::Set(d, static_cast<double>(n)), s.index);
+  for (std::size_t a = 0; a < 3; ++a) {
+    s.centre[a] = hn::IfThenElse(wins, hn::Set(d, centre[a]), s.centre[a]);
+  }
   return hn::AndNot(misses, hn::Eq(q, zero));
+}
+
+// Sphere::FillHit's outward normal, normalize(o + t d - centre), at the search's final
+// distance t, for the lanes whose closest hit is a sphere (the others' are meaningless),
+// stored at lanes.sphereNormal[.][i..].
+template <class D>
+HWY_INLINE void StoreSphereNormals(D d, const hwy::HWY_NAMESPACE::Vec<D> (&o)[3],
+                                   const hwy::HWY_NAMESPACE::Vec<D> (&dir)[3],
+                                   hwy::HWY_NAMESPACE::Vec<D> t,
+                                   const hwy::HWY_NAMESPACE::Vec<D> (&centre)[3], RayLanes& lanes,
+                                   std::size_t i) {
+  namespace hn = hwy::HWY_NAMESPACE;
+  using V = hn::Vec<D>;
+  V v[3];
+  for (std::size_t a = 0; a < 3; ++a) {
+    v[a] = hn::Sub(hn::Add(o[a], hn::Mul(t, dir[a])), centre[a]);
+  }
+  // glm::normalize: v * (1 / sqrt(dot(v, v))), the dot as (x + y) + z.
+  const V length2 = hn::Add(hn::Add(hn::Mul(v[0], v[0]), hn::Mul(v[1], v[1])), hn::Mul(v[2], v[2]));
+  const V inverse = hn::Div(hn::Set(d, 1.0), hn::Sqrt(length2));
+  for (std::size_t a = 0; a < 3; ++a) {
+    hn::Store(hn::Mul(v[a], inverse), d, lanes.sphereNormal[a].data() + i);
+  }
 }
 
 // The terms of cube number n that Cube::Nearer needs: its bounding sphere's radius and

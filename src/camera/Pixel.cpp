@@ -85,10 +85,7 @@ PixelPass Pixel::TracePassInLanes(const Camera& camera, int x, int y, int rays,
     // its colour into the sum in ray order, as TracePass adds them.
     for (std::size_t lane = 0; lane < static_cast<std::size_t>(count); ++lane) {
       if (!keepTrees) trees.Clear();
-      Ray ray = CameraRay(
-          camera.Eye(),
-          vec3(lanes.direction[0][lane], lanes.direction[1][lane], lanes.direction[2][lane]),
-          importance);
+      Ray ray = LaneCameraRay(camera.Eye(), lanes, lane, importance);
       ray.end = vec3(lanes.end[0][lane], lanes.end[1][lane], lanes.end[2][lane]);
       ray.object = lanes.object;
       ray.final = true;
@@ -125,9 +122,7 @@ PixelPass Pixel::TracePassWithFirstHits(const Camera& camera, int x, int y, int 
       const auto j = static_cast<std::size_t>(lane);
       if (!keepTrees) trees.Clear();
       sampler.StartSampleWith(first + lane, numbers, j);
-      const std::uint32_t root = trees.Add(CameraRay(
-          camera.Eye(), vec3(lanes.direction[0][j], lanes.direction[1][j], lanes.direction[2][j]),
-          importance));
+      const std::uint32_t root = trees.Add(LaneCameraRay(camera.Eye(), lanes, j, importance));
       ++stats.cameraRays;
       if (lanes.closest[j] >= 0.0) ++stats.laneRays;  // its first hit from the lanes
       AddSample(integrator.TraceFromLane(trees, root, shaft_, lanes, lane, sampler, stats), pass,
@@ -164,9 +159,7 @@ PixelPass Pixel::TracePassInGroups(const Camera& camera, int x, int y, int rays,
     for (int i = 0; i < count; ++i) {
       const RayLanes& set = lanes[static_cast<std::size_t>(i / RayLanes::kMax)];
       const auto j = static_cast<std::size_t>(i % RayLanes::kMax);
-      trees.Add(CameraRay(camera.Eye(),
-                          vec3(set.direction[0][j], set.direction[1][j], set.direction[2][j]),
-                          importance));
+      trees.Add(LaneCameraRay(camera.Eye(), set, j, importance));
       ++stats.cameraRays;
       if (set.closest[j] >= 0.0) ++stats.laneRays;
     }

@@ -4,6 +4,8 @@
 
 #include <cstddef>
 
+#include "glint/transport/HitLanes.hpp"  // FillHitFromLane
+
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/transport/CameraHitLanes.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -39,6 +41,7 @@ void FindHitsIn(D d, const HitLaneConstants& k, RayLanes& lanes, int count) {
     const V pz = hn::Sub(fz, hn::Mul(b, dz));
     return dot(px, py, pz, px, py, pz);
   };
+  const V eye[3] = {set(k.camera.eye[0]), set(k.camera.eye[1]), set(k.camera.eye[2])};
   for (std::size_t i = 0; i < static_cast<std::size_t>(count); i += w) {
     CameraWallHit<V> h{};
     CameraDirection(d, k.camera, lanes.px.data() + i, lanes.py.data() + i, h);
@@ -148,10 +151,7 @@ void FindHitsIn(D d, const HitLaneConstants& k, RayLanes& lanes, int count) {
     hn::Store(dx, d, lanes.direction[0].data() + i);
     hn::Store(dy, d, lanes.direction[1].data() + i);
     hn::Store(dz, d, lanes.direction[2].data() + i);
-    if (!k.spheres.empty()) {
-      const V eye[3] = {set(k.camera.eye[0]), set(k.camera.eye[1]), set(k.camera.eye[2])};
-      StoreSphereNormals(d, eye, dirs, t, closest.centre, lanes, i);
-    }
+    if (!k.spheres.empty()) StoreSphereNormals(d, eye, dirs, t, closest.centre, lanes, i);
     hn::Store(t, d, lanes.t.data() + i);
     hn::Store(hn::IfThenElse(rare, set(-1.0), winner), d, lanes.closest.data() + i);
     hn::Store(index, d, lanes.closestIndex.data() + i);
@@ -243,19 +243,7 @@ void CameraHitLanes::Trace(RayLanes& lanes, int count) const {
 }
 
 bool CameraHitLanes::FillHit(const RayLanes& lanes, int i, Hit& hit) const {
-  const auto j = static_cast<std::size_t>(i);
-  const auto winner = static_cast<Scene::Closest>(static_cast<int>(lanes.closest[j]));
-  const int index = static_cast<int>(lanes.closestIndex[j]);
-  int face = static_cast<int>(lanes.closestFace[j]);
-  if (winner == Scene::Closest::Sphere) {  // its normal from the lanes
-    scene_.spheres[static_cast<std::size_t>(index)].FillHitAt(
-        vec3(lanes.sphereNormal[0][j], lanes.sphereNormal[1][j], lanes.sphereNormal[2][j]),
-        lanes.t[j], hit);
-    return true;
-  }
-  if (winner == Scene::Closest::Wall) face = Wall::SideOfFace(face);
-  const vec3 direction(lanes.direction[0][j], lanes.direction[1][j], lanes.direction[2][j]);
-  return scene_.FillClosest(winner, index, face, lanes.t[j], eye_, direction, hit);
+  return FillHitFromLane(scene_, lanes, i, eye_, hit);
 }
 
 }  // namespace glint

@@ -219,21 +219,26 @@ void HitLanes::Trace(RayLanes& lanes, int count) const {
   kernel_(k_, lanes, padded);
 }
 
-bool HitLanes::FillHit(const RayLanes& lanes, int i, Hit& hit) const {
+bool FillHitFromLane(const Scene& scene, const RayLanes& lanes, int i, vec3 origin, Hit& hit) {
   const auto j = static_cast<std::size_t>(i);
   const auto winner = static_cast<Scene::Closest>(static_cast<int>(lanes.closest[j]));
   const int index = static_cast<int>(lanes.closestIndex[j]);
   int face = static_cast<int>(lanes.closestFace[j]);
   if (winner == Scene::Closest::Sphere) {  // its normal from the lanes
-    scene_.spheres[static_cast<std::size_t>(index)].FillHitAt(
+    scene.spheres[static_cast<std::size_t>(index)].FillHitAt(
         vec3(lanes.sphereNormal[0][j], lanes.sphereNormal[1][j], lanes.sphereNormal[2][j]),
         lanes.t[j], hit);
     return true;
   }
   if (winner == Scene::Closest::Wall) face = Wall::SideOfFace(face);
-  const vec3 origin(lanes.start[0][j], lanes.start[1][j], lanes.start[2][j]);
   const vec3 direction(lanes.direction[0][j], lanes.direction[1][j], lanes.direction[2][j]);
-  return scene_.FillClosest(winner, index, face, lanes.t[j], origin, direction, hit);
+  return scene.FillClosest(winner, index, face, lanes.t[j], origin, direction, hit);
+}
+
+bool HitLanes::FillHit(const RayLanes& lanes, int i, Hit& hit) const {
+  const auto j = static_cast<std::size_t>(i);
+  return FillHitFromLane(scene_, lanes, i,
+                         vec3(lanes.start[0][j], lanes.start[1][j], lanes.start[2][j]), hit);
 }
 
 }  // namespace glint

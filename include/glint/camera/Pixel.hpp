@@ -7,6 +7,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 
 #include "glint/camera/Integrator.hpp"
@@ -130,6 +131,11 @@ class Pixel {
   template <class TraceGroup>
   static PixelPass TraceGroups(int rays, RayTree& trees, const std::atomic<bool>* cancel,
                                TraceGroup traceGroup, int groupRays = RayLanes::kMax);
+  // The camera ray of lane j of `lanes`, whose direction the lanes found (CameraRay).
+  static Ray LaneCameraRay(vec3 eye, const RayLanes& lanes, std::size_t j, double importance) {
+    return CameraRay(eye, vec3(lanes.direction[0][j], lanes.direction[1][j], lanes.direction[2][j]),
+                     importance);
+  }
   // A camera ray's tree root: from the eye along unit `direction`, importance 1/N.
   static Ray CameraRay(vec3 eye, vec3 direction, double importance) {
     Ray ray;

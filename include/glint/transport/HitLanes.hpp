@@ -36,6 +36,12 @@ struct HitLaneScene {
 
 using SecondaryHitKernel = void (*)(const HitLaneScene&, RayLanes&, int);
 
+// Lane i's hit record from a closest-hit kernel's output (HitLanes, CameraHitLanes), for
+// its ray from `origin`, as Scene::Intersect gives it: a sphere's from the lanes' normal,
+// the others' by Scene::FillClosest; false if it met nothing. The lane must have
+// closest >= 0.
+bool FillHitFromLane(const Scene& scene, const RayLanes& lanes, int i, vec3 origin, Hit& hit);
+
 class HitLanes {
  public:
   // The lanes for `scene` (its area light counted if `withAreaLight`) on `target` (Auto:

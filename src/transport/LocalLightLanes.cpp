@@ -12,6 +12,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include "glint/transport/SegmentLanes-inl.h"
+
 HWY_BEFORE_NAMESPACE();
 namespace glint {
 namespace HWY_NAMESPACE {
@@ -70,61 +72,7 @@ void ShadeLocalLightLanesIn(D d, const LocalLightLaneScene& scene, LocalLightLan
         o[a] = hn::IfThenElse(along, hn::Add(p[a], step), hn::Sub(p[a], step));
         v[a] = hn::Sub(set(light.position[a]), o[a]);
       }
-      const V va = dot(v[0], v[1], v[2], v[0], v[1], v[2]);  // a = v.v
-      M blocked = hn::Lt(one, zero);                         // none
-      // Sphere::IntersectsSegment, each opaque sphere.
-      for (const LocalLightLaneScene::SphereTerms& s : scene.spheres) {
-        V f[3];
-        for (std::size_t a = 0; a < 3; ++a) f[a] = hn::Sub(o[a], set(s.centre[a]));
-        const V b = dot(f[0], f[1], f[2], v[0], v[1], v[2]);
-        V q[3];
-        for (std::size_t a = 0; a < 3; ++a) q[a] = hn::Sub(hn::Mul(va, f[a]), hn::Mul(b, v[a]));
-        const V r2a = set(s.r2);
-        const V scaled =
-            hn::Sub(hn::Mul(hn::Mul(r2a, va), va), dot(q[0], q[1], q[2], q[0], q[1], q[2]));
-        const M misses = hn::Or(hn::Lt(scaled, zero), hn::Eq(va, zero));
-        const V c = hn::Sub(dot(f[0], f[1], f[2], f[0], f[1], f[2]), r2a);
-        const V root = hn::Neg(hn::Add(b, hn::CopySign(hn::Sqrt(hn::Div(scaled, va)), b)));
-        const V s0 = hn::Div(root, va);
-        const V s1 = hn::Div(c, root);
-        const M inside0 = hn::And(hn::Gt(s0, zero), hn::Lt(s0, one));
-        const M inside1 = hn::And(hn::Gt(s1, zero), hn::Lt(s1, one));
-        const M hits = hn::AndNot(hn::Or(misses, hn::Eq(root, zero)), hn::Or(inside0, inside1));
-        blocked = hn::Or(blocked, hits);
-      }
-      // Cube::IntersectsSegment, each opaque cube: the bound, then IntersectSlabs along v.
-      for (const LocalLightLaneScene::CubeTerms& c : scene.cubes) {
-        V f[3];
-        for (std::size_t a = 0; a < 3; ++a) f[a] = hn::Sub(o[a], set(c.centre[a]));
-        const V b = dot(f[0], f[1], f[2], v[0], v[1], v[2]);
-        V q[3];
-        for (std::size_t a = 0; a < 3; ++a) q[a] = hn::Sub(hn::Mul(va, f[a]), hn::Mul(b, v[a]));
-        const M outsideBound = hn::Gt(dot(q[0], q[1], q[2], q[0], q[1], q[2]),
-                                      hn::Mul(hn::Mul(set(c.boundRadius2), va), va));
-        V tNear = set(-kInfinity);
-        V tFar = set(kInfinity);
-        M missesSlab = hn::Lt(one, zero);  // none
-        for (std::size_t a = 0; a < 3; ++a) {
-          const V lo = set(c.low[a]);
-          const V hi = set(c.high[a]);
-          // Parallel to the slab: inside it for all s, or never.
-          const M parallel = hn::Eq(v[a], zero);
-          missesSlab =
-              hn::Or(missesSlab, hn::And(parallel, hn::Or(hn::Lt(o[a], lo), hn::Gt(o[a], hi))));
-          const V t0 = hn::Div(hn::Sub(lo, o[a]), v[a]);
-          const V t1 = hn::Div(hn::Sub(hi, o[a]), v[a]);
-          const M backward = hn::Lt(v[a], zero);
-          const V enter = hn::IfThenElse(backward, t1, t0);
-          const V leave = hn::IfThenElse(backward, t0, t1);
-          tNear = hn::IfThenElse(hn::AndNot(parallel, hn::Gt(enter, tNear)), enter, tNear);
-          tFar = hn::IfThenElse(hn::AndNot(parallel, hn::Lt(leave, tFar)), leave, tFar);
-        }
-        const M nearInside = hn::And(hn::Gt(tNear, zero), hn::Lt(tNear, one));
-        const M farInside = hn::And(hn::Gt(tFar, zero), hn::Lt(tFar, one));
-        const M hits = hn::AndNot(hn::Or(outsideBound, missesSlab),
-                                  hn::And(hn::Le(tNear, tFar), hn::Or(nearInside, farInside)));
-        blocked = hn::Or(blocked, hits);
-      }
+      const M blocked = SegmentBlocked(d, scene.segments, o, v);
       // brdf = kd / pi, plus ks (n + 2) / (2 pi) CosinePower(max(0, Reflect(-l, n) . -d), n).
       V brdf = hn::Load(d, lanes.diffuse.data() + i);
       if (specular) {
@@ -189,15 +137,7 @@ LocalLightLaneScene TermsOf(const Scene& scene) {
   for (const PointLight& light : scene.pointLights) {
     k.lights.push_back({LaneArray(light.position), LaneArray(light.intensity)});
   }
-  for (const Sphere& s : scene.spheres) {
-    if (s.GetMaterial().IsTransparent()) continue;  // shadow rays pass through glass
-    k.spheres.push_back({LaneArray(s.Centre()), s.Radius() * s.Radius()});
-  }
-  for (const Cube& c : scene.cubes) {
-    if (c.GetMaterial().IsTransparent()) continue;
-    k.cubes.push_back({LaneArray(c.Centre()), LaneArray(c.Position()), LaneArray(c.MaxCorner()),
-                       c.BoundRadius2()});
-  }
+  k.segments = SegmentLaneScene::Of(scene, /*glassBlocks=*/false);  // through glass
   // Enough squarings for every exponent the lanes may be given: up to 1024, 11 bits.
   double largest = 0.0;
   const auto take = [&largest](const Material& m) {

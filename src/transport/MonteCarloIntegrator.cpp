@@ -45,6 +45,7 @@ MonteCarloIntegrator::MonteCarloIntegrator(const Scene& scene, MonteCarloOptions
     }
     hitLanes_.emplace(scene_, *camera, /*withAreaLight=*/true, options_.simd);
     secondaryLanes_.emplace(scene_, /*withAreaLight=*/true, options_.simd);
+    wallLightLanes_.emplace(scene_, light_, options_.simd);
   }
 }
 
@@ -76,10 +77,13 @@ void MonteCarloIntegrator::TraceGroupFromLanes(RayTree& trees, std::uint32_t fir
   std::array<int, kSlots> top{};
   std::array<std::uint32_t, kSlots> nodes{};  // the slot's tree's nodes so far
   std::array<std::uint32_t, kSlots> roots{};
+  // The wall hits' next-event estimates, W at a time in lanes (LambertianLightLanes).
+  LambertianLightLaneData wallLights;
   const auto shade = [&](std::size_t slot, Pending p, const Hit& hit, const PixelShaft& s) {
     Colour local;
-    const std::uint32_t kept =
-        ShadeNode(trees, p.index, p.node, roots[slot], hit, local, samplers[slot], stats, s);
+    const std::uint32_t kept = ShadeNode(trees, p.index, p.node, roots[slot], hit, local,
+                                         samplers[slot], stats, s, &wallLights);
+    if (wallLights.count == RayLanes::kMax) FlushWallLights(trees, wallLights, stats);
     const std::uint32_t first = trees[p.index].firstChild;
     for (std::uint32_t i = kept; i-- > 0;) {
       stacks[slot][static_cast<std::size_t>(top[slot]++)] = {first + i, nodes[slot] + i};
@@ -137,10 +141,27 @@ void MonteCarloIntegrator::TraceGroupFromLanes(RayTree& trees, std::uint32_t fir
       shade(slotOf[k], pending[k], hit, PixelShaft{});
     }
   }
+  FlushWallLights(trees, wallLights, stats);
   trees.AddChildColours(firstRoot);  // in TraceNode's order
   for (int i = 0; i < count; ++i)
     colours[i] = trees[firstRoot + static_cast<std::uint32_t>(i)].colour;
   sampler = samplers[lastSlot];
+}
+
+void MonteCarloIntegrator::FlushWallLights(RayTree& trees, LambertianLightLaneData& deferred,
+                                           RenderStats& stats) const {
+  if (deferred.count == 0) return;
+  wallLightLanes_->Estimate(deferred);
+  for (std::size_t j = 0; j < static_cast<std::size_t>(deferred.count); ++j) {
+    Ray& ray = trees[deferred.node[j]];
+    const Colour direct(deferred.colour[0][j], deferred.colour[1][j], deferred.colour[2][j]);
+    ray.colour = direct + ray.colour;  // ShadeNode's (0 + direct) + rest, to the bit
+    if (deferred.cast[j] != 0.0) {
+      ++stats.shadowRays;
+      if (deferred.unoccluded[j] != 0.0) ++stats.shadowRaysByShaft;
+    }
+  }
+  deferred.count = 0;
 }
 
 void MonteCarloIntegrator::TraceLanes(RayLanes& lanes, int count, const PixelShaft& shaft,
@@ -315,7 +336,8 @@ Colour MonteCarloIntegrator::TraceNode(RayTree& tree, std::uint32_t index, std::
 std::uint32_t MonteCarloIntegrator::ShadeNode(RayTree& tree, std::uint32_t index,
                                               std::uint32_t node, std::uint32_t root,
                                               const Hit& hit, Colour& local, Sampler& sampler,
-                                              RenderStats& stats, const PixelShaft& shaft) const {
+                                              RenderStats& stats, const PixelShaft& shaft,
+                                              LambertianLightLaneData* deferred) const {
   // A reference, not a copy (copying the node cost ~10% of the render): valid until
   // AddChildren below may move the nodes; what is needed after that is read first.
   const Ray& ray = tree[index];
@@ -341,13 +363,26 @@ std::uint32_t MonteCarloIntegrator::ShadeNode(RayTree& tree, std::uint32_t index
   // Next-event estimation at walls (always) and Phong objects (unless BRDF-only).
   using Strategy = MonteCarloOptions::Strategy;
   if (m.type == MaterialType::Lambertian) {
+    if (deferred != nullptr) {
+      deferred->Add(index, hit.point, n, light_.Radiance() * m.reflectance,
+                    sampler.Get2D(SampleDimension::Light(node)), shaft.areaLightVisible);
+    }
     // The design's terminal walls end most paths: no child, nothing else to do.
     if (options_.walls == MonteCarloOptions::Walls::Terminal) {
-      local = EndAtTerminalWall(tree[index], hit, n, node, sampler, stats, shaft.areaLightVisible);
+      if (deferred == nullptr) {
+        local =
+            EndAtTerminalWall(tree[index], hit, n, node, sampler, stats, shaft.areaLightVisible);
+      } else {
+        tree[index].final = true;
+        tree[index].colour = Colour(0.0);
+        local = Colour(0.0);
+      }
       return 0;
     }
-    colour += DirectLight(hit, ray.direction, n, 0.0, sampler.Get2D(SampleDimension::Light(node)),
-                          stats, shaft.areaLightVisible);
+    if (deferred == nullptr) {
+      colour += DirectLight(hit, ray.direction, n, 0.0, sampler.Get2D(SampleDimension::Light(node)),
+                            stats, shaft.areaLightVisible);
+    }
     // And the light seen in the mirrors, estimated at a wall hit with probability
     // kMirroredLightProbability (and divided by it).
     if (useMirrored_ &&

@@ -4,10 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 
 #include "glint/camera/Camera.hpp"
 #include "glint/image/Image.hpp"
+#include "glint/sampling/Rng.hpp"
+#include "glint/scene/Scene.hpp"
 
 namespace glint::testing {
 
@@ -24,6 +27,21 @@ inline int DifferingPixels(const Image& a, const Image& b) {
     differing += !SameBits(a.Pixels()[i], b.Pixels()[i]);
   }
   return differing;
+}
+
+// A ray from a uniform point of `scene`'s room in a uniform direction (the lanes' tests'
+// hits: every wall, object and side of them).
+struct RoomRay {
+  vec3 origin, direction;
+};
+inline RoomRay RandomRoomRay(const Scene& scene, Pcg32& rng) {
+  const vec3 lo = scene.wall.Position();
+  const vec3 o =
+      lo + vec3(rng.Uniform(), rng.Uniform(), rng.Uniform()) * (scene.wall.MaxCorner() - lo);
+  const double z = 2.0 * rng.Uniform() - 1.0;
+  const double phi = 2.0 * kPi * rng.Uniform();
+  const double s = std::sqrt(1.0 - z * z);
+  return {o, vec3(s * std::cos(phi), s * std::sin(phi), z)};
 }
 
 struct LaneRender {

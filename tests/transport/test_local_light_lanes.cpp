@@ -44,13 +44,7 @@ Counts CompareWithScalar(const Scene& scene, SimdTarget target, int groups) {
     std::vector<Colour> expected;
     std::vector<std::uint64_t> rays;
     for (int i = 0; i < count;) {
-      const vec3 lo = scene.wall.Position();
-      const vec3 o =
-          lo + vec3(rng.Uniform(), rng.Uniform(), rng.Uniform()) * (scene.wall.MaxCorner() - lo);
-      const double z = 2.0 * rng.Uniform() - 1.0;
-      const double phi = 2.0 * kPi * rng.Uniform();
-      const double s = std::sqrt(1.0 - z * z);
-      const vec3 d(s * std::cos(phi), s * std::sin(phi), z);
+      const auto [o, d] = testing::RandomRoomRay(scene, rng);
       Hit hit;
       if (!scene.Intersect(o, d, hit, false) || !LocalLightLanes::Serves(*hit.material)) continue;
       if (hit.object < scene.wall.ObjectOf(0) + Wall::kSides && rng.Uniform() < 0.7) continue;

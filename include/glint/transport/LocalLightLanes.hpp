@@ -16,6 +16,7 @@
 #include "glint/camera/RayLanes.hpp"
 #include "glint/core/SimdTarget.hpp"
 #include "glint/scene/Scene.hpp"
+#include "glint/transport/SegmentLanes.hpp"
 
 namespace glint {
 
@@ -37,17 +38,8 @@ struct LocalLightLaneScene {
     std::array<double, 3> position, intensity;
   };
   std::vector<LightTerms> lights;
-  struct SphereTerms {
-    std::array<double, 3> centre;
-    double r2;  // radius * radius
-  };
-  std::vector<SphereTerms> spheres;  // the opaque ones
-  struct CubeTerms {
-    std::array<double, 3> centre, low, high;
-    double boundRadius2;
-  };
-  std::vector<CubeTerms> cubes;  // the opaque ones
-  int exponentBits = 0;          // of the largest exponent the lanes serve
+  SegmentLaneScene segments;  // the opaque spheres and cubes: shadow rays pass through glass
+  int exponentBits = 0;       // of the largest exponent the lanes serve
 };
 
 using LocalLightKernel = void (*)(const LocalLightLaneScene&, LocalLightLaneData&, int);

@@ -14,6 +14,7 @@
 #include "glint/transport/CameraHitLanes.hpp"
 #include "glint/transport/Fresnel.hpp"
 #include "glint/transport/HitLanes.hpp"
+#include "glint/transport/LambertianLightLanes.hpp"
 #include "glint/transport/LightTracer.hpp"
 #include "glint/transport/MirroredLight.hpp"
 #include "glint/transport/MonteCarloOptions.hpp"
@@ -165,9 +166,16 @@ class MonteCarloIntegrator final : public Integrator {
   // once its hit is known, but for its children's colours: its end, object and final
   // flag, its local light into `local` (and into its colour), its children after Russian
   // roulette (from tree[index].firstChild); returns how many it kept.
+  // `deferred`: if given, a Lambertian hit's next-event estimate is left to the lanes
+  // (its numbers drawn here, in the same order): it waits in `deferred`, and the node's
+  // and `local`'s colour lack it until FlushWallLights adds it.
   std::uint32_t ShadeNode(RayTree& tree, std::uint32_t index, std::uint32_t node,
                           std::uint32_t root, const Hit& hit, Colour& local, Sampler& sampler,
-                          RenderStats& stats, const PixelShaft& shaft) const;
+                          RenderStats& stats, const PixelShaft& shaft,
+                          LambertianLightLaneData* deferred = nullptr) const;
+  // The deferred estimates, in lanes: each added to its node's colour (the estimate first,
+  // as ShadeNode's sum has it), its shadow ray counted.
+  void FlushWallLights(RayTree& trees, LambertianLightLaneData& deferred, RenderStats& stats) const;
   // How much of the light's emission a ray that hit it counts: 1, an MIS weight, or 0
   // where next-event estimation has counted it already.
   double EmissionWeight(const Ray& ray, vec3 lightPoint) const;
@@ -185,9 +193,10 @@ class MonteCarloIntegrator final : public Integrator {
   MirroredLight mirrored_;
   bool useMirrored_;                   // diffuse walls, MirrorLight::Nee, and mirrors in the scene
   std::optional<LightTracer> tracer_;  // Caustics::Light
-  std::optional<TerminalWallLanes> lanes_;  // Walls::Terminal, with the camera
-  std::optional<CameraHitLanes> hitLanes_;  // with the camera
-  std::optional<HitLanes> secondaryLanes_;  // with the camera, from 4 lanes
+  std::optional<TerminalWallLanes> lanes_;              // Walls::Terminal, with the camera
+  std::optional<CameraHitLanes> hitLanes_;              // with the camera
+  std::optional<HitLanes> secondaryLanes_;              // with the camera, from 4 lanes
+  std::optional<LambertianLightLanes> wallLightLanes_;  // with secondaryLanes_
 };
 
 // Inline: the walls' hits, most of a render, take this path.

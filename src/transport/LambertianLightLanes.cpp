@@ -57,9 +57,7 @@ void EstimateLambertianLightLanesIn(D d, const LambertianLightLaneScene& k,
     if (!hn::AllFalse(d, hn::AndNot(untested, cast))) {
       // OffsetRayOrigin(p, n, x): dot(x, n) >= 0 where a ray is cast, so p + d n; then
       // Scene::Occluded(origin, y), the segment v = y - origin.
-      const V offset =
-          hn::Mul(hn::Set(d, kOriginOffset),
-                  hn::Add(one, hn::Max(hn::Max(hn::Abs(p[0]), hn::Abs(p[1])), hn::Abs(p[2]))));
+      const V offset = OriginOffset(d, p);
       V o[3];
       V segment[3];
       for (std::size_t a = 0; a < 3; ++a) {

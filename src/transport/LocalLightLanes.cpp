@@ -46,10 +46,7 @@ void ShadeLocalLightLanesIn(D d, const LocalLightLaneScene& scene, LocalLightLan
     const M hasSpecular = hn::Ne(hn::Load(d, lanes.specular.data() + i), zero);
     const bool specular = !hn::AllFalse(d, hasSpecular);
     const V exponent = hn::Load(d, lanes.exponent.data() + i);
-    // OffsetRayOrigin's distance, kOriginOffset (1 + max |p_a|).
-    const V offset =
-        hn::Mul(set(kOriginOffset),
-                hn::Add(one, hn::Max(hn::Max(hn::Abs(p[0]), hn::Abs(p[1])), hn::Abs(p[2]))));
+    const V offset = OriginOffset(d, p);
     V sum[3] = {zero, zero, zero};
     V shadowRays = zero;
     for (const LocalLightLaneScene::LightTerms& light : scene.lights) {

@@ -31,6 +31,16 @@ V SegmentDot(const V* a, const V* b) {
   return hn::Add(hn::Add(hn::Mul(a[0], b[0]), hn::Mul(a[1], b[1])), hn::Mul(a[2], b[2]));
 }
 
+// OffsetRayOrigin's distance from p, kOriginOffset (1 + max |p_a|): where a shadow
+// segment starts.
+template <class D>
+hwy::HWY_NAMESPACE::Vec<D> OriginOffset(D d, const hwy::HWY_NAMESPACE::Vec<D>* p) {
+  namespace hn = hwy::HWY_NAMESPACE;
+  return hn::Mul(
+      hn::Set(d, kOriginOffset),
+      hn::Add(hn::Set(d, 1.0), hn::Max(hn::Max(hn::Abs(p[0]), hn::Abs(p[1])), hn::Abs(p[2]))));
+}
+
 // Both tests' start: f = o - centre, b = f.v and q = a f - b v, a = v.v (whose length
 // is a times the distance from the centre to the segment's line).
 template <class V>

@@ -148,8 +148,7 @@ void LightTracer::Follow(Camera& camera, Sampler& sampler, PathState path, std::
         // the ceiling by way of the floor): f cos / p = rho, and the camera's ray at the
         // same point has the same density, so r gains no factor here.
         const Sample2 uv = sampler.Get2D(SampleDimension::Scatter(node));
-        next.direction =
-            glm::normalize(Frame::FromZ(n).ToWorld(SampleCosineHemisphere(uv.u, uv.v)));
+        next.direction = SampleCosineDirection(n, uv.u, uv.v);
         next.beta = path.beta * m.reflectance;
         break;
       }

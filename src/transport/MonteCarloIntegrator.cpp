@@ -46,6 +46,7 @@ MonteCarloIntegrator::MonteCarloIntegrator(const Scene& scene, MonteCarloOptions
     hitLanes_.emplace(scene_, *camera, /*withAreaLight=*/true, options_.simd);
     secondaryLanes_.emplace(scene_, /*withAreaLight=*/true, options_.simd);
     wallLightLanes_.emplace(scene_, light_, options_.simd);
+    wallChildLanes_.emplace(options_.simd);
   }
 }
 
@@ -77,13 +78,15 @@ void MonteCarloIntegrator::TraceGroupFromLanes(RayTree& trees, std::uint32_t fir
   std::array<int, kSlots> top{};
   std::array<std::uint32_t, kSlots> nodes{};  // the slot's tree's nodes so far
   std::array<std::uint32_t, kSlots> roots{};
-  // The wall hits' next-event estimates, W at a time in lanes (LambertianLightLanes).
-  LambertianLightLaneData wallLights;
+  // The wall hits' next-event estimates and children, W at a time in lanes
+  // (LambertianLightLanes, LambertianScatterLanes).
+  WallLaneWork walls;
   const auto shade = [&](std::size_t slot, Pending p, const Hit& hit, const PixelShaft& s) {
     Colour local;
     const std::uint32_t kept = ShadeNode(trees, p.index, p.node, roots[slot], hit, local,
-                                         samplers[slot], stats, s, &wallLights);
-    if (wallLights.count == RayLanes::kMax) FlushWallLights(trees, wallLights, stats);
+                                         samplers[slot], stats, s, &walls);
+    if (walls.lights.count == RayLanes::kMax) FlushWallLights(trees, walls.lights, stats);
+    if (walls.children.count == RayLanes::kMax) FlushWallChildren(trees, walls.children);
     const std::uint32_t first = trees[p.index].firstChild;
     for (std::uint32_t i = kept; i-- > 0;) {
       stacks[slot][static_cast<std::size_t>(top[slot]++)] = {first + i, nodes[slot] + i};
@@ -122,13 +125,16 @@ void MonteCarloIntegrator::TraceGroupFromLanes(RayTree& trees, std::uint32_t fir
       const auto j = static_cast<std::size_t>(n++);
       slotOf[j] = slot;
       pending[j] = stacks[slot][static_cast<std::size_t>(--top[slot])];
+    }
+    if (n == 0) break;
+    FlushWallChildren(trees, walls.children);  // some of the rays just taken wait there
+    for (std::size_t j = 0; j < static_cast<std::size_t>(n); ++j) {
       const Ray& ray = trees[pending[j].index];
       for (std::size_t a = 0; a < 3; ++a) {
         step.start[a][j] = ray.start[static_cast<glm::length_t>(a)];
         step.direction[a][j] = ray.direction[static_cast<glm::length_t>(a)];
       }
     }
-    if (n == 0) break;
     secondaryLanes_->Trace(step, n);
     for (int j = 0; j < n; ++j) {
       const auto k = static_cast<std::size_t>(j);
@@ -141,7 +147,7 @@ void MonteCarloIntegrator::TraceGroupFromLanes(RayTree& trees, std::uint32_t fir
       shade(slotOf[k], pending[k], hit, PixelShaft{});
     }
   }
-  FlushWallLights(trees, wallLights, stats);
+  FlushWallLights(trees, walls.lights, stats);
   trees.AddChildColours(firstRoot);  // in TraceNode's order
   for (int i = 0; i < count; ++i)
     colours[i] = trees[firstRoot + static_cast<std::uint32_t>(i)].colour;
@@ -160,6 +166,19 @@ void MonteCarloIntegrator::FlushWallLights(RayTree& trees, LambertianLightLaneDa
       ++stats.shadowRays;
       if (deferred.unoccluded[j] != 0.0) ++stats.shadowRaysByShaft;
     }
+  }
+  deferred.count = 0;
+}
+
+void MonteCarloIntegrator::FlushWallChildren(RayTree& trees,
+                                             LambertianScatterLaneData& deferred) const {
+  if (deferred.count == 0) return;
+  wallChildLanes_->Sample(deferred);
+  for (std::size_t j = 0; j < static_cast<std::size_t>(deferred.count); ++j) {
+    Ray& ray = trees[deferred.node[j]];
+    ray.start = vec3(deferred.start[0][j], deferred.start[1][j], deferred.start[2][j]);
+    ray.direction =
+        vec3(deferred.direction[0][j], deferred.direction[1][j], deferred.direction[2][j]);
   }
   deferred.count = 0;
 }
@@ -209,7 +228,8 @@ Colour MonteCarloIntegrator::EndAtTerminalWall(Ray& ray, const Hit& hit, vec3 n,
 }
 
 int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, std::uint32_t node,
-                                  Sampler& sampler, Candidate* out) const {
+                                  Sampler& sampler, Candidate* out,
+                                  LambertianScatterLaneData* deferred) const {
   const Material& m = *hit.material;
   const vec3 d = ray.direction;
   switch (m.type) {
@@ -217,10 +237,14 @@ int MonteCarloIntegrator::Scatter(const Ray& ray, const Hit& hit, vec3 n, std::u
       if (options_.walls == MonteCarloOptions::Walls::Terminal) return 0;
       // Cosine sampling: f cos / p = (rho / pi) cos / (cos / pi) = rho.
       const Sample2 uv = sampler.Get2D(SampleDimension::Scatter(node));
-      const vec3 w = Frame::FromZ(n).ToWorld(SampleCosineHemisphere(uv.u, uv.v));
+      vec3 w(0.0);  // with `deferred`, LambertianScatterLanes computes it
+      if (deferred != nullptr) {
+        deferred->Stage(hit.point, hit.normal, n, uv);
+      } else {
+        w = SampleCosineDirection(n, uv.u, uv.v);
+      }
       // The light it may reach: counted by next-event estimation at this wall.
-      out[0] =
-          Candidate::Of(glm::normalize(w), m.reflectance, 0.0, RayKind::Diffuse, ray.inside, true);
+      out[0] = Candidate::Of(w, m.reflectance, 0.0, RayKind::Diffuse, ray.inside, true);
       return 1;
     }
     case MaterialType::Phong: {
@@ -337,7 +361,7 @@ std::uint32_t MonteCarloIntegrator::ShadeNode(RayTree& tree, std::uint32_t index
                                               std::uint32_t node, std::uint32_t root,
                                               const Hit& hit, Colour& local, Sampler& sampler,
                                               RenderStats& stats, const PixelShaft& shaft,
-                                              LambertianLightLaneData* deferred) const {
+                                              WallLaneWork* deferred) const {
   // A reference, not a copy (copying the node cost ~10% of the render): valid until
   // AddChildren below may move the nodes; what is needed after that is read first.
   const Ray& ray = tree[index];
@@ -364,8 +388,8 @@ std::uint32_t MonteCarloIntegrator::ShadeNode(RayTree& tree, std::uint32_t index
   using Strategy = MonteCarloOptions::Strategy;
   if (m.type == MaterialType::Lambertian) {
     if (deferred != nullptr) {
-      deferred->Add(index, hit.point, n, light_.Radiance() * m.reflectance,
-                    sampler.Get2D(SampleDimension::Light(node)), shaft.areaLightVisible);
+      deferred->lights.Add(index, hit.point, n, light_.Radiance() * m.reflectance,
+                           sampler.Get2D(SampleDimension::Light(node)), shaft.areaLightVisible);
     }
     // The design's terminal walls end most paths: no child, nothing else to do.
     if (options_.walls == MonteCarloOptions::Walls::Terminal) {
@@ -404,7 +428,10 @@ std::uint32_t MonteCarloIntegrator::ShadeNode(RayTree& tree, std::uint32_t index
   const Colour importance = ray.importance;
   const int depth = ray.depth;
   Candidate candidates[kMaxBranches];
-  int count = depth + 1 < options_.maxDepth ? Scatter(ray, hit, n, node, sampler, candidates) : 0;
+  int count = depth + 1 < options_.maxDepth
+                  ? Scatter(ray, hit, n, node, sampler, candidates,
+                            deferred != nullptr ? &deferred->children : nullptr)
+                  : 0;
   if (tracer_) SetCausticRatios(ray, hit, n, candidates, count);
   // Russian roulette by throughput relative to the camera ray, whose importance is
   // 1/N: survive with q = min(1, beta / threshold), then divide by q. (The root
@@ -431,8 +458,12 @@ std::uint32_t MonteCarloIntegrator::ShadeNode(RayTree& tree, std::uint32_t index
   for (int i = 0; i < kept; ++i) {
     const Candidate& c = candidates[i];
     Ray& child = tree[first + static_cast<std::uint32_t>(i)];
-    child.start = OffsetRayOrigin(hit.point, hit.normal, c.direction);  // to the side it leaves on
-    child.direction = c.direction;
+    if (deferred != nullptr && c.kind == RayKind::Diffuse) {
+      deferred->children.Keep(first + static_cast<std::uint32_t>(i));  // its ray: in lanes
+    } else {
+      child.start = OffsetRayOrigin(hit.point, hit.normal, c.direction);  // the side it leaves on
+      child.direction = c.direction;
+    }
     child.weight = c.weight;
     child.importance = importance * c.weight;
     child.pdf = c.pdf;

@@ -28,6 +28,11 @@ inline vec3 SampleCosineHemisphere(double u1, double u2) {
   const SinCos phi = SinCosTurns(u2);  // the azimuth 2 pi u2
   return {r * phi.cos, r * phi.sin, SafeSqrt(1.0 - u1)};
 }
+// A cosine-sampled direction around the unit normal n, unit length (Frame, then
+// normalised: the frame's rounding leaves it within a few ulp of 1).
+inline vec3 SampleCosineDirection(vec3 n, double u1, double u2) {
+  return glm::normalize(Frame::FromZ(n).ToWorld(SampleCosineHemisphere(u1, u2)));
+}
 inline double CosineHemispherePdf(double cosTheta) {
   return cosTheta > 0.0 ? cosTheta * kInvPi : 0.0;
 }

@@ -15,6 +15,7 @@
 #include "glint/transport/Fresnel.hpp"
 #include "glint/transport/HitLanes.hpp"
 #include "glint/transport/LambertianLightLanes.hpp"
+#include "glint/transport/LambertianScatterLanes.hpp"
 #include "glint/transport/LightTracer.hpp"
 #include "glint/transport/MirroredLight.hpp"
 #include "glint/transport/MonteCarloOptions.hpp"
@@ -166,23 +167,33 @@ class MonteCarloIntegrator final : public Integrator {
   // once its hit is known, but for its children's colours: its end, object and final
   // flag, its local light into `local` (and into its colour), its children after Russian
   // roulette (from tree[index].firstChild); returns how many it kept.
-  // `deferred`: if given, a Lambertian hit's next-event estimate is left to the lanes
-  // (its numbers drawn here, in the same order): it waits in `deferred`, and the node's
-  // and `local`'s colour lack it until FlushWallLights adds it.
+  // What a lock-step group leaves to lanes at its Lambertian hits, their numbers drawn in
+  // ShadeNode's order all the same.
+  struct WallLaneWork {
+    LambertianLightLaneData lights;      // the next-event estimates
+    LambertianScatterLaneData children;  // the cosine-sampled children's rays
+  };
+  // `deferred`: if given, a Lambertian hit's next-event estimate and its child's ray are
+  // left to the lanes: the node's and `local`'s colour lack the estimate until
+  // FlushWallLights adds it, and the child has no start or direction until
+  // FlushWallChildren.
   std::uint32_t ShadeNode(RayTree& tree, std::uint32_t index, std::uint32_t node,
                           std::uint32_t root, const Hit& hit, Colour& local, Sampler& sampler,
                           RenderStats& stats, const PixelShaft& shaft,
-                          LambertianLightLaneData* deferred = nullptr) const;
+                          WallLaneWork* deferred = nullptr) const;
   // The deferred estimates, in lanes: each added to its node's colour (the estimate first,
   // as ShadeNode's sum has it), its shadow ray counted.
   void FlushWallLights(RayTree& trees, LambertianLightLaneData& deferred, RenderStats& stats) const;
+  // The deferred children's rays, in lanes: their start and direction set.
+  void FlushWallChildren(RayTree& trees, LambertianScatterLaneData& deferred) const;
   // How much of the light's emission a ray that hit it counts: 1, an MIS weight, or 0
   // where next-event estimation has counted it already.
   double EmissionWeight(const Ray& ray, vec3 lightPoint) const;
   // Candidate children of a hit of node `node` (before Russian roulette); returns their
-  // number.
+  // number. `deferred`: if given, a Lambertian hit's child direction is left to the lanes
+  // (staged there; the candidate's direction is 0).
   int Scatter(const Ray& ray, const Hit& hit, vec3 n, std::uint32_t node, Sampler& sampler,
-              Candidate* out) const;
+              Candidate* out, LambertianScatterLaneData* deferred = nullptr) const;
   // With light tracing: the candidates' Ray::causticRatio, from the ray's.
   void SetCausticRatios(const Ray& ray, const Hit& hit, vec3 n, Candidate* candidates,
                         int count) const;
@@ -193,10 +204,11 @@ class MonteCarloIntegrator final : public Integrator {
   MirroredLight mirrored_;
   bool useMirrored_;                   // diffuse walls, MirrorLight::Nee, and mirrors in the scene
   std::optional<LightTracer> tracer_;  // Caustics::Light
-  std::optional<TerminalWallLanes> lanes_;              // Walls::Terminal, with the camera
-  std::optional<CameraHitLanes> hitLanes_;              // with the camera
-  std::optional<HitLanes> secondaryLanes_;              // with the camera, from 4 lanes
-  std::optional<LambertianLightLanes> wallLightLanes_;  // with secondaryLanes_
+  std::optional<TerminalWallLanes> lanes_;                // Walls::Terminal, with the camera
+  std::optional<CameraHitLanes> hitLanes_;                // with the camera
+  std::optional<HitLanes> secondaryLanes_;                // with the camera, from 4 lanes
+  std::optional<LambertianLightLanes> wallLightLanes_;    // with secondaryLanes_
+  std::optional<LambertianScatterLanes> wallChildLanes_;  // with secondaryLanes_
 };
 
 // Inline: the walls' hits, most of a render, take this path.

@@ -1,0 +1,126 @@
+// Highway compiles this file once per x86-64 target (foreach_target.h); the kernel below
+// is the same source for each, dispatched by LambertianScatterLanes at run time.
+#include "glint/transport/LambertianScatterLanes.hpp"
+
+#include <cstddef>
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "src/transport/LambertianScatterLanes.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "glint/core/SinCosLanes-inl.h"
+#include "glint/transport/SegmentLanes-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace glint {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// Each line is the scalar code's operation in its order (SampleCosineHemisphere,
+// Frame::FromZ and ToWorld, glm::normalize, OffsetRayOrigin); -ffp-contract=off keeps
+// products and sums apart.
+template <class D>
+void SampleLambertianScatterLanesIn(D d, LambertianScatterLaneData& lanes, int count) {
+  using V = hn::Vec<D>;
+  const std::size_t w = hn::Lanes(d);
+  const V zero = hn::Zero(d);
+  const V one = hn::Set(d, 1.0);
+  for (std::size_t i = 0; i < static_cast<std::size_t>(count); i += w) {
+    V p[3];
+    V normal[3];
+    V n[3];
+    for (std::size_t a = 0; a < 3; ++a) {
+      p[a] = hn::Load(d, lanes.point[a].data() + i);
+      normal[a] = hn::Load(d, lanes.normal[a].data() + i);
+      n[a] = hn::Load(d, lanes.facing[a].data() + i);
+    }
+    // Malley's method: (r cos phi, r sin phi, SafeSqrt(1 - u)), r = sqrt(u), phi = 2 pi v.
+    const V u = hn::Load(d, lanes.u.data() + i);
+    const V r = hn::Sqrt(u);
+    const SinCosLanes<V> phi = SinCosTurnsLanes(d, hn::Load(d, lanes.v.data() + i));
+    const V lx = hn::Mul(r, phi.cos);
+    const V ly = hn::Mul(r, phi.sin);
+    const V c2 = hn::Sub(one, u);
+    const V lz = hn::Sqrt(hn::IfThenElse(hn::Lt(zero, c2), c2, zero));  // std::max(0, c2)
+    // Frame::FromZ(n) (Duff et al.): s = (1 + sign nx nx a, sign b, -sign nx),
+    // t = (b, sign + ny ny a, -ny), a = -1 / (sign + nz), b = nx ny a.
+    const V sign = hn::CopySign(one, n[2]);
+    const V fa = hn::Div(hn::Set(d, -1.0), hn::Add(sign, n[2]));
+    const V fb = hn::Mul(hn::Mul(n[0], n[1]), fa);
+    const V s[3] = {hn::Add(one, hn::Mul(hn::Mul(hn::Mul(sign, n[0]), n[0]), fa)),
+                    hn::Mul(sign, fb), hn::Mul(hn::Neg(sign), n[0])};
+    const V t[3] = {fb, hn::Add(sign, hn::Mul(hn::Mul(n[1], n[1]), fa)), hn::Neg(n[1])};
+    // ToWorld: (x s + y t) + z n, then times 1 / sqrt(w.w) (glm::inversesqrt).
+    V world[3];
+    for (std::size_t a = 0; a < 3; ++a) {
+      world[a] = hn::Add(hn::Add(hn::Mul(lx, s[a]), hn::Mul(ly, t[a])), hn::Mul(lz, n[a]));
+    }
+    const V inv = hn::Div(one, hn::Sqrt(SegmentDot(world, world)));
+    V dir[3];
+    for (std::size_t a = 0; a < 3; ++a) dir[a] = hn::Mul(world[a], inv);
+    // OffsetRayOrigin(p, normal, dir): p + o normal where dir.normal >= 0, else p - o normal.
+    const V offset = OriginOffset(d, p);
+    const auto out = hn::Ge(SegmentDot(dir, normal), zero);
+    for (std::size_t a = 0; a < 3; ++a) {
+      const V step = hn::Mul(offset, normal[a]);
+      hn::Store(dir[a], d, lanes.direction[a].data() + i);
+      hn::Store(hn::IfThenElse(out, hn::Add(p[a], step), hn::Sub(p[a], step)), d,
+                lanes.start[a].data() + i);
+    }
+  }
+}
+
+// The target's full width, and one lane (the scalar path: the same code).
+void SampleLambertianScatterLanes(LambertianScatterLaneData& lanes, int count) {
+  SampleLambertianScatterLanesIn(hn::ScalableTag<double>(), lanes, count);
+}
+void SampleLambertianScatterLane(LambertianScatterLaneData& lanes, int count) {
+  SampleLambertianScatterLanesIn(hn::CappedTag<double, 1>(), lanes, count);
+}
+
+// NOLINTNEXTLINE(google-readability-namespace-comments)
+}  // namespace HWY_NAMESPACE
+}  // namespace glint
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace glint {
+
+LambertianScatterLanes::LambertianScatterLanes(SimdTarget target)
+    : width_(SimdLanes(ResolveSimdTarget(target))),
+      kernel_(KernelForTarget<LambertianScatterKernel>(
+          ResolveSimdTarget(target), HWY_CHOOSE_SSE4(SampleLambertianScatterLanes),
+          HWY_CHOOSE_AVX2(SampleLambertianScatterLanes),
+          HWY_CHOOSE_AVX3(SampleLambertianScatterLanes),
+          &HWY_STATIC_DISPATCH(SampleLambertianScatterLane))) {}
+
+void LambertianScatterLaneData::Stage(vec3 p, vec3 surfaceNormal, vec3 facingNormal, Sample2 uv) {
+  const auto j = static_cast<std::size_t>(count);
+  for (std::size_t a = 0; a < 3; ++a) {
+    const auto c = static_cast<glm::length_t>(a);
+    point[a][j] = p[c];
+    normal[a][j] = surfaceNormal[c];
+    facing[a][j] = facingNormal[c];
+  }
+  u[j] = uv.u;
+  v[j] = uv.v;
+}
+
+void LambertianScatterLanes::Sample(LambertianScatterLaneData& lanes) const {
+  const int padded = (lanes.count + width_ - 1) / width_ * width_;
+  for (int i = lanes.count; i < padded; ++i) {  // spare lanes: lane 0's inputs, ignored
+    const auto j = static_cast<std::size_t>(i);
+    for (std::size_t a = 0; a < 3; ++a) {
+      lanes.point[a][j] = lanes.point[a][0];
+      lanes.normal[a][j] = lanes.normal[a][0];
+      lanes.facing[a][j] = lanes.facing[a][0];
+    }
+    lanes.u[j] = lanes.u[0];
+    lanes.v[j] = lanes.v[0];
+  }
+  kernel_(lanes, padded);
+}
+
+}  // namespace glint
+#endif  // HWY_ONCE

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 
+#include "glint/core/LanePadding.hpp"
 #include "glint/transport/HitLanes.hpp"  // FillHitFromLane
 
 #undef HWY_TARGET_INCLUDE
@@ -233,12 +234,8 @@ CameraHitLanes::CameraHitLanes(const Scene& scene, const Pinhole& camera, bool w
                                              &HWY_STATIC_DISPATCH(FindHitsOneLane))) {}
 
 void CameraHitLanes::Trace(RayLanes& lanes, int count) const {
-  const int padded = (count + width_ - 1) / width_ * width_;
-  for (int i = count; i < padded; ++i) {  // spare lanes: lane 0's point, results ignored
-    const auto j = static_cast<std::size_t>(i);
-    lanes.px[j] = lanes.px[0];
-    lanes.py[j] = lanes.py[0];
-  }
+  // Spare lanes: lane 0's inputs, results ignored.
+  const int padded = PadLanesFromLaneZero(count, width_, lanes.px, lanes.py);
   kernel_(k_, lanes, padded);
 }
 

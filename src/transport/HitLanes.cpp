@@ -4,6 +4,7 @@
 
 #include <cstddef>
 
+#include "glint/core/LanePadding.hpp"
 #include "glint/transport/CameraWallLanes.hpp"  // LaneArray
 
 #undef HWY_TARGET_INCLUDE
@@ -208,14 +209,8 @@ HitLanes::HitLanes(const Scene& scene, bool withAreaLight, SimdTarget target)
           &HWY_STATIC_DISPATCH(FindSecondaryHitsOneLane))) {}
 
 void HitLanes::Trace(RayLanes& lanes, int count) const {
-  const int padded = (count + width_ - 1) / width_ * width_;
-  for (int i = count; i < padded; ++i) {  // spare lanes: lane 0's ray, results ignored
-    const auto j = static_cast<std::size_t>(i);
-    for (std::size_t a = 0; a < 3; ++a) {
-      lanes.start[a][j] = lanes.start[a][0];
-      lanes.direction[a][j] = lanes.direction[a][0];
-    }
-  }
+  // Spare lanes: lane 0's inputs, results ignored.
+  const int padded = PadLanesFromLaneZero(count, width_, lanes.start, lanes.direction);
   kernel_(k_, lanes, padded);
 }
 

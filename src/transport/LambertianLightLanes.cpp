@@ -4,6 +4,7 @@
 
 #include <cstddef>
 
+#include "glint/core/LanePadding.hpp"
 #include "glint/core/Math.hpp"
 #include "glint/transport/CameraWallLanes.hpp"  // LaneArray
 
@@ -128,18 +129,9 @@ void LambertianLightLaneData::Add(std::uint32_t index, vec3 p, vec3 n, Colour le
 }
 
 void LambertianLightLanes::Estimate(LambertianLightLaneData& lanes) const {
-  const int padded = (lanes.count + width_ - 1) / width_ * width_;
-  for (int i = lanes.count; i < padded; ++i) {  // spare lanes: lane 0's inputs, ignored
-    const auto j = static_cast<std::size_t>(i);
-    for (std::size_t a = 0; a < 3; ++a) {
-      lanes.point[a][j] = lanes.point[a][0];
-      lanes.normal[a][j] = lanes.normal[a][0];
-      lanes.radiance[a][j] = lanes.radiance[a][0];
-    }
-    lanes.u[j] = lanes.u[0];
-    lanes.v[j] = lanes.v[0];
-    lanes.unoccluded[j] = lanes.unoccluded[0];
-  }
+  // Spare lanes: lane 0's inputs, results ignored.
+  const int padded = PadLanesFromLaneZero(lanes.count, width_, lanes.point, lanes.normal,
+                                          lanes.radiance, lanes.u, lanes.v, lanes.unoccluded);
   kernel_(k_, lanes, padded);
 }
 

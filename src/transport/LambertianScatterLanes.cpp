@@ -4,6 +4,8 @@
 
 #include <cstddef>
 
+#include "glint/core/LanePadding.hpp"
+
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/transport/LambertianScatterLanes.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -108,17 +110,9 @@ void LambertianScatterLaneData::Stage(vec3 p, vec3 surfaceNormal, vec3 facingNor
 }
 
 void LambertianScatterLanes::Sample(LambertianScatterLaneData& lanes) const {
-  const int padded = (lanes.count + width_ - 1) / width_ * width_;
-  for (int i = lanes.count; i < padded; ++i) {  // spare lanes: lane 0's inputs, ignored
-    const auto j = static_cast<std::size_t>(i);
-    for (std::size_t a = 0; a < 3; ++a) {
-      lanes.point[a][j] = lanes.point[a][0];
-      lanes.normal[a][j] = lanes.normal[a][0];
-      lanes.facing[a][j] = lanes.facing[a][0];
-    }
-    lanes.u[j] = lanes.u[0];
-    lanes.v[j] = lanes.v[0];
-  }
+  // Spare lanes: lane 0's inputs, results ignored.
+  const int padded = PadLanesFromLaneZero(lanes.count, width_, lanes.point, lanes.normal,
+                                          lanes.facing, lanes.u, lanes.v);
   kernel_(lanes, padded);
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "glint/core/LanePadding.hpp"
 #include "glint/transport/CameraWallLanes.hpp"  // LaneArray
 
 #undef HWY_TARGET_INCLUDE
@@ -169,20 +170,10 @@ void LocalLightLanes::SetMaterial(LocalLightLaneData& lanes, std::size_t j, cons
 }
 
 void LocalLightLanes::Shade(LocalLightLaneData& lanes, int count) const {
-  const int padded = (count + width_ - 1) / width_ * width_;
-  for (int i = count; i < padded; ++i) {  // spare lanes: lane 0's hit, results ignored
-    const auto j = static_cast<std::size_t>(i);
-    for (std::size_t a = 0; a < 3; ++a) {
-      lanes.point[a][j] = lanes.point[a][0];
-      lanes.normal[a][j] = lanes.normal[a][0];
-      lanes.direction[a][j] = lanes.direction[a][0];
-      lanes.reflectance[a][j] = lanes.reflectance[a][0];
-    }
-    lanes.diffuse[j] = lanes.diffuse[0];
-    lanes.specularScale[j] = lanes.specularScale[0];
-    lanes.exponent[j] = lanes.exponent[0];
-    lanes.specular[j] = lanes.specular[0];
-  }
+  // Spare lanes: lane 0's inputs, results ignored.
+  const int padded = PadLanesFromLaneZero(count, width_, lanes.point, lanes.normal, lanes.direction,
+                                          lanes.reflectance, lanes.diffuse, lanes.specularScale,
+                                          lanes.exponent, lanes.specular);
   kernel_(k_, lanes, padded);
 }
 

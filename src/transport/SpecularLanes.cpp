@@ -4,6 +4,8 @@
 
 #include <cstddef>
 
+#include "glint/core/LanePadding.hpp"
+
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/transport/SpecularLanes.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -101,15 +103,8 @@ SpecularLanes::SpecularLanes(SimdTarget target)
           &HWY_STATIC_DISPATCH(FindSpecularLane))) {}
 
 void SpecularLanes::Find(SpecularLaneData& lanes, int count) const {
-  const int padded = (count + width_ - 1) / width_ * width_;
-  for (int i = count; i < padded; ++i) {  // spare lanes: lane 0's, results ignored
-    const auto j = static_cast<std::size_t>(i);
-    for (std::size_t a = 0; a < 3; ++a) {
-      lanes.direction[a][j] = lanes.direction[a][0];
-      lanes.normal[a][j] = lanes.normal[a][0];
-    }
-    lanes.ior[j] = lanes.ior[0];
-  }
+  // Spare lanes: lane 0's inputs, results ignored.
+  const int padded = PadLanesFromLaneZero(count, width_, lanes.direction, lanes.normal, lanes.ior);
   kernel_(lanes, padded);
 }
 

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 
+#include "glint/core/LanePadding.hpp"
 #include "glint/core/Math.hpp"
 
 #undef HWY_TARGET_INCLUDE
@@ -112,14 +113,9 @@ TerminalWallLanes::TerminalWallLanes(const Wall& room, const Light& light, const
 }
 
 void TerminalWallLanes::Trace(RayLanes& lanes, int count, int side) const {
-  const int padded = (count + width_ - 1) / width_ * width_;
-  for (int i = count; i < padded; ++i) {  // spare lanes: lane 0's numbers, results ignored
-    const auto j = static_cast<std::size_t>(i);
-    lanes.px[j] = lanes.px[0];
-    lanes.py[j] = lanes.py[0];
-    lanes.lightU[j] = lanes.lightU[0];
-    lanes.lightV[j] = lanes.lightV[0];
-  }
+  // Spare lanes: lane 0's inputs, results ignored.
+  const int padded =
+      PadLanesFromLaneZero(count, width_, lanes.px, lanes.py, lanes.lightU, lanes.lightV);
   kernel_(sides_[static_cast<std::size_t>(side)], lanes, padded);
 }
 

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <stdexcept>
 
+#include "glint/core/LanePadding.hpp"
 #include "glint/core/Math.hpp"
 
 #undef HWY_TARGET_INCLUDE
@@ -101,12 +102,8 @@ WhittedWallLanes::WhittedWallLanes(const Wall& room, const std::vector<PointLigh
 }
 
 void WhittedWallLanes::Trace(RayLanes& lanes, int count, int side, PointLightLanes& out) const {
-  const int padded = (count + width_ - 1) / width_ * width_;
-  for (int i = count; i < padded; ++i) {  // spare lanes: lane 0's numbers, results ignored
-    const auto j = static_cast<std::size_t>(i);
-    lanes.px[j] = lanes.px[0];
-    lanes.py[j] = lanes.py[0];
-  }
+  // Spare lanes: lane 0's inputs, results ignored.
+  const int padded = PadLanesFromLaneZero(count, width_, lanes.px, lanes.py);
   kernel_(sides_[static_cast<std::size_t>(side)], lanes, padded, out);
 }
 

@@ -13,6 +13,7 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include "glint/sampling/CosinePowerLanes-inl.h"
 #include "glint/transport/SegmentLanes-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -84,17 +85,7 @@ void ShadeLocalLightLanesIn(D d, const LocalLightLaneScene& scene, LocalLightLan
             dot(rd[0], rd[1], rd[2], hn::Neg(ray[0]), hn::Neg(ray[1]), hn::Neg(ray[2]));
         const V cosR =
             hn::IfThenElse(hn::Lt(zero, towardsEye), towardsEye, zero);  // std::max(0, .)
-        // CosinePower by squaring: power *= base where bit b of n is set, base *= base.
-        V power = one;
-        V base = cosR;
-        V k = exponent;
-        for (int b = 0; b < scene.exponentBits; ++b) {
-          const V half = hn::Floor(hn::Mul(k, set(0.5)));
-          const auto odd = hn::Ne(k, hn::Add(half, half));
-          power = hn::IfThenElse(odd, hn::Mul(power, base), power);
-          base = hn::Mul(base, base);
-          k = half;
-        }
+        const V power = CosinePowerLanes(d, cosR, exponent, scene.exponentBits);
         const V lobe = hn::Mul(hn::Load(d, lanes.specularScale.data() + i), power);
         brdf = hn::IfThenElse(hasSpecular, hn::Add(brdf, lobe), brdf);
       }

@@ -58,17 +58,14 @@ void SampleLambertianScatterLanesIn(D d, LambertianScatterLaneData& lanes, int c
     for (std::size_t a = 0; a < 3; ++a) {
       world[a] = hn::Add(hn::Add(hn::Mul(lx, s[a]), hn::Mul(ly, t[a])), hn::Mul(lz, n[a]));
     }
-    const V inv = hn::Div(one, hn::Sqrt(SegmentDot(world, world)));
-    V dir[3];
-    for (std::size_t a = 0; a < 3; ++a) dir[a] = hn::Mul(world[a], inv);
+    NormalizeLanes(d, world);
     // OffsetRayOrigin(p, normal, dir): p + o normal where dir.normal >= 0, else p - o normal.
-    const V offset = OriginOffset(d, p);
-    const auto out = hn::Ge(SegmentDot(dir, normal), zero);
+    V start[3];
+    OffsetRayOriginLanes<D>(p, normal, OriginOffset(d, p), hn::Ge(SegmentDot(world, normal), zero),
+                            start);
     for (std::size_t a = 0; a < 3; ++a) {
-      const V step = hn::Mul(offset, normal[a]);
-      hn::Store(dir[a], d, lanes.direction[a].data() + i);
-      hn::Store(hn::IfThenElse(out, hn::Add(p[a], step), hn::Sub(p[a], step)), d,
-                lanes.start[a].data() + i);
+      hn::Store(world[a], d, lanes.direction[a].data() + i);
+      hn::Store(start[a], d, lanes.start[a].data() + i);
     }
   }
 }

@@ -27,7 +27,7 @@ void LightTracer::Trace(Camera& camera, Sampler& sampler, int count, RenderStats
     const Sample2 a = sampler.Get2D(SampleDimension::Light(0));
     const Sample2 b = sampler.Get2D(SampleDimension::Scatter(0));
     PathState path;
-    const vec3 w = glm::normalize(frame.ToWorld(SampleCosineHemisphere(b.u, b.v)));
+    const vec3 w = SampleCosineDirection(frame, b.u, b.v);
     path.origin = OffsetRayOrigin(light_.SamplePoint(a.u, a.v), normal, w);
     path.direction = w;
     path.beta = beta0;

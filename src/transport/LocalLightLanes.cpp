@@ -65,12 +65,9 @@ void ShadeLocalLightLanesIn(D d, const LocalLightLaneScene& scene, LocalLightLan
       // Reaches: from OffsetRayOrigin(p, n, l) to the light, v = q - origin.
       const M along = hn::Ge(dot(l[0], l[1], l[2], n[0], n[1], n[2]), zero);
       V o[3];
+      OffsetRayOriginLanes<D>(p, n, offset, along, o);
       V v[3];
-      for (std::size_t a = 0; a < 3; ++a) {
-        const V step = hn::Mul(offset, n[a]);
-        o[a] = hn::IfThenElse(along, hn::Add(p[a], step), hn::Sub(p[a], step));
-        v[a] = hn::Sub(set(light.position[a]), o[a]);
-      }
+      for (std::size_t a = 0; a < 3; ++a) v[a] = hn::Sub(set(light.position[a]), o[a]);
       const M blocked = SegmentBlocked(d, scene.segments, o, v);
       // brdf = kd / pi, plus ks (n + 2) / (2 pi) CosinePower(max(0, Reflect(-l, n) . -d), n).
       V brdf = hn::Load(d, lanes.diffuse.data() + i);

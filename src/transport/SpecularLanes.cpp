@@ -11,6 +11,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include "glint/transport/SegmentLanes-inl.h"  // SegmentDot, NormalizeLanes
+
 HWY_BEFORE_NAMESPACE();
 namespace glint {
 namespace HWY_NAMESPACE {
@@ -24,13 +26,6 @@ void FindSpecularLanesIn(D d, SpecularLaneData& lanes, int count) {
   const std::size_t w = hn::Lanes(d);
   const V zero = hn::Zero(d);
   const V one = hn::Set(d, 1.0);
-  const auto dot = [](const V* a, const V* b) {  // glm::dot: (x + y) + z
-    return hn::Add(hn::Add(hn::Mul(a[0], b[0]), hn::Mul(a[1], b[1])), hn::Mul(a[2], b[2]));
-  };
-  const auto normalize = [&](V* v) {  // glm::normalize: v * inversesqrt(v.v)
-    const V inv = hn::Div(one, hn::Sqrt(dot(v, v)));
-    for (std::size_t a = 0; a < 3; ++a) v[a] = hn::Mul(v[a], inv);
-  };
   for (std::size_t i = 0; i < static_cast<std::size_t>(count); i += w) {
     V dir[3];
     V n[3];
@@ -39,13 +34,13 @@ void FindSpecularLanesIn(D d, SpecularLaneData& lanes, int count) {
       n[a] = hn::Load(d, lanes.normal[a].data() + i);
     }
     // Reflect: d - 2 (d.n) n, normalised.
-    const V twice = hn::Mul(hn::Set(d, 2.0), dot(dir, n));
+    const V twice = hn::Mul(hn::Set(d, 2.0), SegmentDot(dir, n));
     V mirror[3];
     for (std::size_t a = 0; a < 3; ++a) mirror[a] = hn::Sub(dir[a], hn::Mul(twice, n[a]));
-    normalize(mirror);
+    NormalizeLanes(d, mirror);
     // CrossDielectric: from inside (cos_i < 0) the normal and the index ratio flip.
     const V ior = hn::Load(d, lanes.ior.data() + i);
-    V cosI = hn::Neg(dot(dir, n));
+    V cosI = hn::Neg(SegmentDot(dir, n));
     const auto inside = hn::Lt(cosI, zero);
     const V eta = hn::IfThenElse(inside, hn::Div(one, ior), ior);
     cosI = hn::IfThenElse(inside, hn::Neg(cosI), cosI);
@@ -65,7 +60,7 @@ void FindSpecularLanesIn(D d, SpecularLaneData& lanes, int count) {
     const V along = hn::Sub(hn::Div(cosI, eta), cosT);
     V t[3];
     for (std::size_t a = 0; a < 3; ++a) t[a] = hn::Add(hn::Div(dir[a], eta), hn::Mul(along, m[a]));
-    normalize(t);
+    NormalizeLanes(d, t);
     // Index 1: undeviated, no reflection, exactly.
     const auto matched = hn::Eq(ior, one);
     for (std::size_t a = 0; a < 3; ++a) {

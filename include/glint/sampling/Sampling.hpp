@@ -30,8 +30,11 @@ inline vec3 SampleCosineHemisphere(double u1, double u2) {
 }
 // A cosine-sampled direction around the unit normal n, unit length (Frame, then
 // normalised: the frame's rounding leaves it within a few ulp of 1).
+inline vec3 SampleCosineDirection(const Frame& frame, double u1, double u2) {
+  return glm::normalize(frame.ToWorld(SampleCosineHemisphere(u1, u2)));
+}
 inline vec3 SampleCosineDirection(vec3 n, double u1, double u2) {
-  return glm::normalize(Frame::FromZ(n).ToWorld(SampleCosineHemisphere(u1, u2)));
+  return SampleCosineDirection(Frame::FromZ(n), u1, u2);
 }
 inline double CosineHemispherePdf(double cosTheta) {
   return cosTheta > 0.0 ? cosTheta * kInvPi : 0.0;

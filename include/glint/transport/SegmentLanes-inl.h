@@ -41,6 +41,27 @@ hwy::HWY_NAMESPACE::Vec<D> OriginOffset(D d, const hwy::HWY_NAMESPACE::Vec<D>* p
       hn::Add(hn::Set(d, 1.0), hn::Max(hn::Max(hn::Abs(p[0]), hn::Abs(p[1])), hn::Abs(p[2]))));
 }
 
+// glm::normalize's v * inversesqrt(v.v), as 1 / sqrt(v.v) (glm::inversesqrt), in place.
+template <class D>
+void NormalizeLanes(D d, hwy::HWY_NAMESPACE::Vec<D>* v) {
+  namespace hn = hwy::HWY_NAMESPACE;
+  const hn::Vec<D> inv = hn::Div(hn::Set(d, 1.0), hn::Sqrt(SegmentDot(v, v)));
+  for (int a = 0; a < 3; ++a) v[a] = hn::Mul(v[a], inv);
+}
+
+// OffsetRayOrigin(p, n, w) from its distance `offset` (OriginOffset): p + offset n where
+// `outward` (w.n >= 0), else p - offset n.
+template <class D>
+void OffsetRayOriginLanes(const hwy::HWY_NAMESPACE::Vec<D>* p, const hwy::HWY_NAMESPACE::Vec<D>* n,
+                          hwy::HWY_NAMESPACE::Vec<D> offset, hwy::HWY_NAMESPACE::Mask<D> outward,
+                          hwy::HWY_NAMESPACE::Vec<D>* origin) {
+  namespace hn = hwy::HWY_NAMESPACE;
+  for (int a = 0; a < 3; ++a) {
+    const hn::Vec<D> step = hn::Mul(offset, n[a]);
+    origin[a] = hn::IfThenElse(outward, hn::Add(p[a], step), hn::Sub(p[a], step));
+  }
+}
+
 // Both tests' start: f = o - centre, b = f.v and q = a f - b v, a = v.v (whose length
 // is a times the distance from the centre to the segment's line).
 template <class V>

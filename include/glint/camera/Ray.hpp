@@ -16,6 +16,8 @@ enum class RayKind : std::uint8_t { Camera, Reflected, Refracted, Diffuse };
 struct Ray {
   static constexpr std::uint32_t kNoChild = 0xffffffffU;
 
+  Ray();
+
   vec3 start{0.0};
   vec3 direction{0.0, 0.0, -1.0};  // unit length
   vec3 end{0.0};                   // where it hit something (start if it escaped)
@@ -44,5 +46,10 @@ struct Ray {
 
   vec3 At(double t) const { return start + t * direction; }
 };
+
+// Defaulted here rather than in the class, so the constructor is user-provided and a
+// new tree node is built from its members' initialisers alone, not zero-filled first
+// (the fill was a rep stos of 184 bytes per node).
+inline Ray::Ray() = default;
 
 }  // namespace glint

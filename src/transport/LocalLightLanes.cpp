@@ -33,9 +33,6 @@ void ShadeLocalLightLanesIn(D d, const LocalLightLaneScene& scene, LocalLightLan
   const V zero = hn::Zero(d);
   const V one = hn::Set(d, 1.0);
   const auto set = [d](double x) { return hn::Set(d, x); };
-  const auto dot = [](V ax, V ay, V az, V bx, V by, V bz) {  // glm::dot: (x + y) + z
-    return hn::Add(hn::Add(hn::Mul(ax, bx), hn::Mul(ay, by)), hn::Mul(az, bz));
-  };
   for (std::size_t i = 0; i < static_cast<std::size_t>(count); i += w) {
     V p[3];
     V n[3];
@@ -55,15 +52,15 @@ void ShadeLocalLightLanesIn(D d, const LocalLightLaneScene& scene, LocalLightLan
       // l = position - p, r^2 = l.l, l /= sqrt(r^2), cos(theta) = n.l.
       V l[3];
       for (std::size_t a = 0; a < 3; ++a) l[a] = hn::Sub(set(light.position[a]), p[a]);
-      const V r2 = dot(l[0], l[1], l[2], l[0], l[1], l[2]);
+      const V r2 = SegmentDot(l, l);
       const V r = hn::Sqrt(r2);
       for (V& c : l) c = hn::Div(c, r);
-      const V cosTheta = dot(n[0], n[1], n[2], l[0], l[1], l[2]);
+      const V cosTheta = SegmentDot(n, l);
       // The scalar test is `<= 0: skip`: a NaN passes it, and so it does here.
       const M cast = hn::Not(hn::Le(cosTheta, zero));
       shadowRays = hn::Add(shadowRays, hn::IfThenElseZero(cast, one));
       // Reaches: from OffsetRayOrigin(p, n, l) to the light, v = q - origin.
-      const M along = hn::Ge(dot(l[0], l[1], l[2], n[0], n[1], n[2]), zero);
+      const M along = hn::Ge(SegmentDot(l, n), zero);
       V o[3];
       OffsetRayOriginLanes<D>(p, n, offset, along, o);
       V v[3];
@@ -72,14 +69,12 @@ void ShadeLocalLightLanesIn(D d, const LocalLightLaneScene& scene, LocalLightLan
       // brdf = kd / pi, plus ks (n + 2) / (2 pi) CosinePower(max(0, Reflect(-l, n) . -d), n).
       V brdf = hn::Load(d, lanes.diffuse.data() + i);
       if (specular) {
-        const V twice = hn::Mul(set(2.0), dot(hn::Neg(l[0]), hn::Neg(l[1]), hn::Neg(l[2]), n[0],
-                                              n[1], n[2]));  // 2 dot(-l, n)
+        const V negL[3] = {hn::Neg(l[0]), hn::Neg(l[1]), hn::Neg(l[2])};
+        const V twice = hn::Mul(set(2.0), SegmentDot(negL, n));  // 2 dot(-l, n)
         V rd[3];
-        for (std::size_t a = 0; a < 3; ++a) {
-          rd[a] = hn::Sub(hn::Neg(l[a]), hn::Mul(twice, n[a]));
-        }
-        const V towardsEye =
-            dot(rd[0], rd[1], rd[2], hn::Neg(ray[0]), hn::Neg(ray[1]), hn::Neg(ray[2]));
+        for (std::size_t a = 0; a < 3; ++a) rd[a] = hn::Sub(negL[a], hn::Mul(twice, n[a]));
+        const V negRay[3] = {hn::Neg(ray[0]), hn::Neg(ray[1]), hn::Neg(ray[2])};
+        const V towardsEye = SegmentDot(rd, negRay);
         const V cosR =
             hn::IfThenElse(hn::Lt(zero, towardsEye), towardsEye, zero);  // std::max(0, .)
         const V power = CosinePowerLanes(d, cosR, exponent, scene.exponentBits);

@@ -103,5 +103,23 @@ TEST(LocalLightLanes, EveryTargetShadesScalarHitsBitForBit) {
   }
 }
 
+// The lanes raise a lobe by CosinePower's squarings: whole exponents in [0, 1024] only;
+// any other lobe, and a hit with no lobe at all, goes to (or needs no) pow.
+TEST(LocalLightLanes, ServeWholeExponentsUpTo1024) {
+  Material m;
+  m.whittedSpecular = 0.5;
+  for (const double n : {0.0, 1.0, 100.0, 1023.0, 1024.0}) {
+    m.exponent = n;
+    EXPECT_TRUE(LocalLightLanes::Serves(m)) << n;
+  }
+  for (const double n : {0.5, 99.999, 1024.5, 1025.0, -1.0, -0.5, 1e300, std::nan("")}) {
+    m.exponent = n;
+    EXPECT_FALSE(LocalLightLanes::Serves(m)) << n;
+  }
+  m.whittedSpecular = 0.0;
+  m.exponent = 0.5;
+  EXPECT_TRUE(LocalLightLanes::Serves(m));  // no lobe
+}
+
 }  // namespace
 }  // namespace glint

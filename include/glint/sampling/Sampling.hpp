@@ -40,20 +40,23 @@ inline double CosineHemispherePdf(double cosTheta) {
   return cosTheta > 0.0 ? cosTheta * kInvPi : 0.0;
 }
 
+// Whether CosinePower raises to n by squaring: a whole n in [0, 1024].
+inline bool PowerBySquaring(double n) {
+  return n >= 0.0 && n <= 1024.0 && static_cast<double>(static_cast<unsigned>(n)) == n;
+}
+
 // c^n for a lobe's cos^n(alpha), c >= 0. Scenes give whole exponents (the canonical
 // n = 100): by repeated squaring those take 8 multiplications instead of a call to
 // pow. Each squaring doubles the relative error, so it stays below n ulp: 1e-14 for
 // n = 100, 2.3e-13 at the largest n taken this way. Any other exponent goes to pow.
 inline double CosinePower(double c, double n) {
-  if (n >= 0.0 && n <= 1024.0) {
+  if (PowerBySquaring(n)) {
+    double power = 1.0;
     auto k = static_cast<unsigned>(n);
-    if (static_cast<double>(k) == n) {
-      double power = 1.0;
-      for (double base = c; k != 0; k >>= 1U, base *= base) {
-        if ((k & 1U) != 0) power *= base;
-      }
-      return power;
+    for (double base = c; k != 0; k >>= 1U, base *= base) {
+      if ((k & 1U) != 0) power *= base;
     }
+    return power;
   }
   return std::pow(c, n);
 }

@@ -9,12 +9,12 @@
 #pragma once
 
 #include <array>
-#include <cmath>
 #include <cstddef>
 #include <vector>
 
 #include "glint/camera/RayLanes.hpp"
 #include "glint/core/SimdTarget.hpp"
+#include "glint/sampling/Sampling.hpp"  // PowerBySquaring
 #include "glint/scene/Scene.hpp"
 #include "glint/transport/SegmentLanes.hpp"
 
@@ -53,8 +53,7 @@ class LocalLightLanes {
   // Whether the lanes' term is LocalLight's for a hit on `m`: no specular lobe, or one
   // whose exponent CosinePower raises to by squaring (an integer in [0, 1024]).
   static bool Serves(const Material& m) {
-    return !(m.whittedSpecular > 0.0) ||
-           (m.exponent >= 0.0 && m.exponent <= 1024.0 && std::floor(m.exponent) == m.exponent);
+    return !(m.whittedSpecular > 0.0) || PowerBySquaring(m.exponent);
   }
   // Lane j's material inputs, as LocalLight computes them from `m`.
   static void SetMaterial(LocalLightLaneData& lanes, std::size_t j, const Material& m);

@@ -23,6 +23,7 @@
 
 #include "glint/core/Math.hpp"
 #include "glint/scene/Scene.hpp"
+#include "glint/transport/SegmentLanes-inl.h"  // NormalizeLanes
 
 HWY_BEFORE_NAMESPACE();
 namespace glint {
@@ -83,12 +84,8 @@ HWY_INLINE void StoreSphereNormals(D d, const hwy::HWY_NAMESPACE::Vec<D> (&o)[3]
   for (std::size_t a = 0; a < 3; ++a) {
     v[a] = hn::Sub(hn::Add(o[a], hn::Mul(t, dir[a])), centre[a]);
   }
-  // glm::normalize: v * (1 / sqrt(dot(v, v))), the dot as (x + y) + z.
-  const V length2 = hn::Add(hn::Add(hn::Mul(v[0], v[0]), hn::Mul(v[1], v[1])), hn::Mul(v[2], v[2]));
-  const V inverse = hn::Div(hn::Set(d, 1.0), hn::Sqrt(length2));
-  for (std::size_t a = 0; a < 3; ++a) {
-    hn::Store(hn::Mul(v[a], inverse), d, lanes.sphereNormal[a].data() + i);
-  }
+  NormalizeLanes(d, v);  // glm::normalize
+  for (std::size_t a = 0; a < 3; ++a) hn::Store(v[a], d, lanes.sphereNormal[a].data() + i);
 }
 
 // The terms of cube number n that Cube::Nearer needs: its bounding sphere's radius and

@@ -158,15 +158,19 @@ void MonteCarloIntegrator::FlushWallLights(RayTree& trees, LambertianLightLaneDa
                                            RenderStats& stats) const {
   if (deferred.count == 0) return;
   wallLightLanes_->Estimate(deferred);
+  std::uint64_t cast = 0;
+  std::uint64_t byShaft = 0;
   for (std::size_t j = 0; j < static_cast<std::size_t>(deferred.count); ++j) {
     Ray& ray = trees[deferred.node[j]];
     const Colour direct(deferred.colour[0][j], deferred.colour[1][j], deferred.colour[2][j]);
     ray.colour = direct + ray.colour;  // ShadeNode's (0 + direct) + rest, to the bit
     if (deferred.cast[j] != 0.0) {
-      ++stats.shadowRays;
-      if (deferred.unoccluded[j] != 0.0) ++stats.shadowRaysByShaft;
+      ++cast;
+      if (deferred.unoccluded[j] != 0.0) ++byShaft;
     }
   }
+  stats.shadowRays += cast;
+  stats.shadowRaysByShaft += byShaft;
   deferred.count = 0;
 }
 
@@ -189,6 +193,15 @@ void MonteCarloIntegrator::TraceLanes(RayLanes& lanes, int count, const PixelSha
   lanes.object = scene_.wall.ObjectOf(shaft.side);
   // The shadow rays, per lane: counted, and tested where the shaft did not answer them
   // (ShadowBlocked, with the scalar code's inputs: the same bits).
+  if (shaft.areaLightVisible) {  // the shaft answers them all: only counted
+    std::uint64_t lit = 0;
+    for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
+      lit += lanes.lit[i] != 0.0 ? 1U : 0U;
+    }
+    stats.shadowRays += lit;
+    stats.shadowRaysByShaft += lit;
+    return;
+  }
   const vec3 normal = scene_.wall.Face(shaft.side).Normal();
   for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
     if (lanes.lit[i] == 0.0) continue;

@@ -56,7 +56,9 @@ void WhittedIntegrator::TraceLanes(RayLanes& lanes, int count, const PixelShaft&
   lanes.object = scene_.wall.ObjectOf(shaft.side);
   const vec3 normal = scene_.wall.Face(shaft.side).Normal();
   // LocalLight's sum, per lane: each light the wall faces casts its shadow ray (or the
-  // shaft answers it), and adds its term in the lights' order.
+  // shaft answers it), and adds its term in the lights' order. Counted in a local, which
+  // stays in registers (the stats' fields, a lane at a time, are a chain of stores and loads).
+  RenderStats counted;
   for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
     const vec3 d(lanes.direction[0][i], lanes.direction[1][i], lanes.direction[2][i]);
     const vec3 p(lanes.end[0][i], lanes.end[1][i], lanes.end[2][i]);
@@ -64,11 +66,12 @@ void WhittedIntegrator::TraceLanes(RayLanes& lanes, int count, const PixelShaft&
     Colour sum(0.0);
     for (std::size_t j = 0; j < scene_.pointLights.size(); ++j) {
       if (lights.facing[j][i] == 0.0) continue;
-      if (!Reaches(j, p, n, shaft, stats)) continue;
+      if (!Reaches(j, p, n, shaft, counted)) continue;
       sum += Colour(lights.term[j][0][i], lights.term[j][1][i], lights.term[j][2][i]);
     }
     for (std::size_t c = 0; c < 3; ++c) lanes.colour[c][i] = sum[static_cast<glm::length_t>(c)];
   }
+  stats += counted;
 }
 
 bool WhittedIntegrator::Reaches(std::size_t i, vec3 p, vec3 n, const PixelShaft& shaft,

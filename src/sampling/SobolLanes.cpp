@@ -3,6 +3,7 @@
 #include "glint/sampling/SobolLanes.hpp"
 
 #include <cstddef>
+#include <cstdint>
 
 #include "glint/sampling/LowDiscrepancy.hpp"
 
@@ -16,9 +17,10 @@ namespace glint {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// ReverseBits32, lane by lane.
+// ReverseBits32, lane by lane, by shifts and masks: for the one-lane path, whose
+// partial register has no 16-byte table to look bytes up in.
 template <class D, class V>
-V ReverseBits(D d, V x) {
+V ReverseBitsByShifts(D d, V x) {
   const auto k1 = hn::Set(d, 0x55555555U);
   const auto k2 = hn::Set(d, 0x33333333U);
   const auto k4 = hn::Set(d, 0x0f0f0f0fU);
@@ -28,6 +30,32 @@ V ReverseBits(D d, V x) {
   // __builtin_bswap32
   return hn::Or(hn::Or(hn::ShiftRight<24>(x), hn::And(hn::ShiftRight<8>(x), hn::Set(d, 0xff00U))),
                 hn::Or(hn::And(hn::ShiftLeft<8>(x), hn::Set(d, 0xff0000U)), hn::ShiftLeft<24>(x)));
+}
+
+// ReverseBits32, lane by lane: each byte's two nibbles reversed and swapped by two
+// in-register lookups of 16 bytes, then the bytes of each lane swapped by a third:
+// 8 operations instead of the shifts' 22 (the Sobol lanes reverse 6 times a sample).
+template <class D, class V>
+V ReverseBits(D d, V x) {
+  if constexpr (hn::MaxLanes(D()) < 4) {
+    return ReverseBitsByShifts(d, x);
+  } else {
+    const hn::Repartition<std::uint8_t, D> d8;
+    // Nibble i reversed, for a byte's low nibble (to its high half) and its high one.
+    alignas(16) static constexpr std::uint8_t kLow[16] = {0x00, 0x80, 0x40, 0xc0, 0x20, 0xa0,
+                                                          0x60, 0xe0, 0x10, 0x90, 0x50, 0xd0,
+                                                          0x30, 0xb0, 0x70, 0xf0};
+    alignas(16) static constexpr std::uint8_t kHigh[16] = {0x0, 0x8, 0x4, 0xc, 0x2, 0xa, 0x6, 0xe,
+                                                           0x1, 0x9, 0x5, 0xd, 0x3, 0xb, 0x7, 0xf};
+    alignas(16) static constexpr std::uint8_t kSwap[16] = {3,  2,  1, 0, 7,  6,  5,  4,
+                                                           11, 10, 9, 8, 15, 14, 13, 12};
+    const auto nibble = hn::Set(d, 0x0f0f0f0fU);
+    const auto low = hn::BitCast(d8, hn::And(x, nibble));
+    const auto high = hn::BitCast(d8, hn::And(hn::ShiftRight<4>(x), nibble));
+    const auto bytes = hn::Or(hn::TableLookupBytes(hn::LoadDup128(d8, kLow), low),
+                              hn::TableLookupBytes(hn::LoadDup128(d8, kHigh), high));
+    return hn::BitCast(d, hn::TableLookupBytes(bytes, hn::LoadDup128(d8, kSwap)));
+  }
 }
 
 // OwenScrambleReversed, lane by lane.
